@@ -1,0 +1,53 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#pragma once
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace pcl
+{
+  /** \brief The object's approximate bounding dimensions D and the parameters derived from it.
+    *
+    * D is the elementwise maximum, over all views, of each view's extents after alignment with its
+    * principal axes (Eq. 1). The vertex-pair distance limits follow Eq. 2 and the bin size Eq. 3.
+    * \ingroup common
+    */
+  struct ObjectDimensions
+  {
+    /** \brief D = [D_x D_y D_z] (Eq. 1), sorted from the largest principal extent to the smallest. */
+    Eigen::Vector3d D = Eigen::Vector3d::Zero ();
+
+    /** \brief mean(D_x, D_y, D_z). */
+    double mean () const { return D.mean (); }
+    /** \brief d_min = mean(D)/6 (Eq. 2). */
+    double dMin () const { return mean () / 6.0; }
+    /** \brief d_max = mean(D)/4 (Eq. 2). */
+    double dMax () const { return mean () / 4.0; }
+    /** \brief Bin size b_s = mean(D)/30 (Eq. 3). */
+    double binSize () const { return mean () / 30.0; }
+    /** \brief Local-verification tolerance t_D = mean(D)/10 (Section 4.1). */
+    double verificationTolerance () const { return mean () / 10.0; }
+  };
+
+  /** \brief Extents of a point set after aligning it with its principal axes (Eq. 1 for one view, Eq. 9
+    * for registered views), sorted from largest to smallest. Non-finite points are skipped.
+    * \throw InvalidScanException when fewer than three finite points remain.
+    */
+  template <typename PointT> Eigen::Vector3d
+  principalExtents (const pcl::PointCloud<PointT>& cloud);
+
+  /** \brief Extents of several point sets taken together (Eq. 9 over M'_ms, or over L views in
+    * Section 4.2), in one common frame.
+    */
+  template <typename PointT> Eigen::Vector3d
+  principalExtents (const std::vector<const pcl::PointCloud<PointT>*>& clouds);
+
+  /** \brief D from all the views of an object (Eq. 1). */
+  template <typename PointT> ObjectDimensions
+  computeObjectDimensions (const std::vector<const pcl::PointCloud<PointT>*>& views);
+}

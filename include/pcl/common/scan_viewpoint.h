@@ -1,0 +1,55 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#pragma once
+
+#include <pcl/point_cloud.h>
+#include <Eigen/Geometry>
+
+namespace pcl
+{
+  /** \brief Where a range scan was seen from: a perspective sensor at a point, or an orthographic one
+    * looking along a direction. It orients normals toward the sensor and defines the retinal plane
+    * onto which unorganized points are projected for Delaunay triangulation (Section 2).
+    *
+    * The sensor frame follows PCL's camera convention: the sensor looks along its own +z axis.
+    * \ingroup common
+    */
+  struct ScanViewpoint
+  {
+    /** \brief Sensor frame expressed in the scan frame (columns: sensor axes; translation: origin). */
+    Eigen::Affine3d sensor_pose = Eigen::Affine3d::Identity ();
+    /** \brief True for a sensor at infinity (parallel lines of sight along the sensor's +z). */
+    bool orthographic = false;
+
+    /** \brief The default for files that carry no sensor pose (PLY): an orthographic sensor on the
+      * +z side of the scan, looking down -z, as the raw Stanford scans were taken.
+      */
+    static ScanViewpoint
+    fromPositiveZ ();
+
+    /** \brief A perspective sensor at the cloud's sensor_origin_, oriented by sensor_orientation_ (PCD). */
+    template <typename PointT> static ScanViewpoint
+    fromCloud (const pcl::PointCloud<PointT>& cloud)
+    {
+      ScanViewpoint v;
+      v.sensor_pose = Eigen::Translation3d (cloud.sensor_origin_.template head<3> ().template cast<double> ())
+                    * cloud.sensor_orientation_.template cast<double> ();
+      return v;
+    }
+
+    /** \brief A perspective sensor at \a position looking at \a target. */
+    static ScanViewpoint
+    lookingAt (const Eigen::Vector3d& position, const Eigen::Vector3d& target);
+
+    /** \brief The unit vector from \a p toward the sensor. */
+    Eigen::Vector3d
+    towardSensor (const Eigen::Vector3d& p) const;
+
+    /** \brief The projection of \a p onto the sensor's retinal plane (perspective: x/z, y/z in the
+      * sensor frame; orthographic: x, y in the sensor frame).
+      */
+    Eigen::Vector2d
+    project (const Eigen::Vector3d& p) const;
+  };
+}

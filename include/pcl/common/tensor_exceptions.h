@@ -1,0 +1,36 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors
+ * (Mian, Bennamoun & Owens, IJCV 2006).
+ */
+#pragma once
+
+#include <pcl/exceptions.h>
+
+namespace pcl
+{
+  /** \brief Thrown when a range scan or mesh cannot be used: empty, all NaN, fewer than three points,
+    * degenerate (collinear) geometry, or a mesh without faces.
+    *
+    * File problems are reported with pcl::IOException and out-of-range parameters with
+    * pcl::BadArgumentException, so that callers can tell bad data from bad files and bad settings.
+    * \ingroup common
+    */
+  class InvalidScanException : public PCLException
+  {
+    public:
+      explicit InvalidScanException (const std::string& error_description,
+                                     const char* file_name = nullptr,
+                                     const char* function_name = nullptr,
+                                     unsigned line_number = 0)
+        : PCLException (error_description, file_name, function_name, line_number)
+      {}
+  };
+}
+
+/** \brief Throw \a ExceptionName with a streamed message, recording where it was thrown. */
+#define PCL_TENSOR_THROW(ExceptionName, message)                                   \
+  do {                                                                             \
+    std::ostringstream pcl_tensor_throw_s_;                                        \
+    pcl_tensor_throw_s_ << message;                                                \
+    throw ExceptionName (pcl_tensor_throw_s_.str ());                              \
+  } while (false)

@@ -1,0 +1,50 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#pragma once
+
+#include <pcl/common/scan_mesh.h>
+
+namespace pcl
+{
+  /** \brief Vertex normals of a reduced mesh M'_i by either approach of Section 2, oriented toward
+    * the sensor.
+    * \ingroup features
+    */
+  class ScanMeshNormalEstimation
+  {
+    public:
+      enum class Method
+      {
+        /** (a) Area-weighted average of the normals of the faces around the vertex in M'_i. Fast. */
+        FACE_AVERAGE,
+        /** (b) The normal of the nearest vertex of M_i, averaged (area-weighted) over the faces of
+          * M_i within a radius of it. More stable; the default. */
+        FINE_NEIGHBOURHOOD
+      };
+
+      void setMethod (Method method) { method_ = method; }
+      Method getMethod () const { return method_; }
+
+      /** \brief Neighbourhood radius for Method::FINE_NEIGHBOURHOOD, in units of the fine mesh's
+        * resolution d_res (default 3).
+        */
+      void setRadiusResolutions (double radius);
+      double getRadiusResolutions () const { return radius_resolutions_; }
+
+      /** \brief Fill in the normals of \a mesh from its own faces (Method::FACE_AVERAGE). Vertices on
+        * no face get the line of sight toward the sensor.
+        */
+      void computeFaceAverage (ScanMesh& mesh) const;
+
+      /** \brief Fill in the normals of \a reduced with the configured method; \a fine is used by
+        * Method::FINE_NEIGHBOURHOOD and gets its own face-average normals as a side effect.
+        * \throw InvalidScanException when a mesh has no faces
+        */
+      void compute (ScanMesh& reduced, ScanMesh& fine) const;
+
+    private:
+      Method method_{Method::FINE_NEIGHBOURHOOD};
+      double radius_resolutions_{3.0};
+  };
+}

@@ -1,0 +1,48 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#pragma once
+
+#include <pcl/common/scan_mesh.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+namespace pcl
+{
+  /** \brief Turns a range image into the triangle mesh M_i of Section 2.
+    *
+    * Organized clouds are triangulated over their grid (the grid is the retinal plane); unorganized
+    * clouds by a 2D Delaunay triangulation (VTK's vtkDelaunay2D) of the points projected onto the
+    * sensor's retinal plane. Triangles with an edge longer than mean + k standard deviations of the
+    * edge lengths are then removed (k = 0.6 in the paper), which separates surfaces that the
+    * triangulation falsely connected. Vertices that no longer belong to any triangle are kept, so
+    * that the mesh has one vertex per finite input point.
+    * \ingroup surface
+    */
+  class RangeScanTriangulation
+  {
+    public:
+      /** \brief Set k in the pruning threshold mean + k * stddev of the edge lengths (default 0.6). */
+      void setEdgeStdDevs (double k);
+      double getEdgeStdDevs () const { return edge_std_devs_; }
+
+      /** \brief Set the sensor; it defines the retinal plane for unorganized clouds. */
+      void setViewpoint (const ScanViewpoint& viewpoint) { viewpoint_ = viewpoint; }
+      const ScanViewpoint& getViewpoint () const { return viewpoint_; }
+
+      /** \brief Force the Delaunay path even for organized clouds (default false). */
+      void setForceDelaunay (bool force) { force_delaunay_ = force; }
+      bool getForceDelaunay () const { return force_delaunay_; }
+
+      /** \brief Triangulate \a cloud into \a mesh (normals zero, viewpoint copied).
+        * \throw InvalidScanException with fewer than three finite points, or when every point lies on
+        * one line in the retinal plane so that no triangle exists
+        */
+      void triangulate (const pcl::PointCloud<pcl::PointXYZ>& cloud, ScanMesh& mesh) const;
+
+    private:
+      double edge_std_devs_{0.6};
+      bool force_delaunay_{false};
+      ScanViewpoint viewpoint_ = ScanViewpoint::fromPositiveZ ();
+  };
+}

@@ -1,0 +1,40 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#pragma once
+
+#include <pcl/common/scan_mesh.h>
+#include <pcl/features/scan_mesh_normals.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+namespace pcl
+{
+  /** \brief Parameters of the range image -> M_i -> M'_i pipeline of Section 2, with the paper's defaults. */
+  struct ScanPreparationParams
+  {
+    /** Prune triangles with an edge longer than mean + k * stddev (Section 2: k = 0.6). */
+    double edge_std_devs = 0.6;
+    /** Faces of the reduced mesh M'_i (Sections 3 and 7.2: about 400). */
+    int target_faces = 400;
+    /** How the normals of M'_i are computed (Section 2, approach (b) by default). */
+    ScanMeshNormalEstimation::Method normal_method = ScanMeshNormalEstimation::Method::FINE_NEIGHBOURHOOD;
+    /** Neighbourhood radius of approach (b), in units of d_res. */
+    double normal_radius_resolutions = 3.0;
+  };
+
+  /** \brief One view, ready for tensor computation. */
+  struct PreparedScan
+  {
+    ScanMesh fine;            ///< M_i, with face-average normals when approach (b) was used
+    ScanMesh reduced;         ///< M'_i, with normals
+    double resolution = 0.0;  ///< d_res of M_i: the mean edge length
+  };
+
+  /** \brief Run triangulation, reduction and normal estimation on one range image.
+    * \throw InvalidScanException on unusable data, pcl::BadArgumentException on bad parameters
+    */
+  PreparedScan
+  prepareScan (const pcl::PointCloud<pcl::PointXYZ>& cloud, const ScanViewpoint& viewpoint,
+               const ScanPreparationParams& params = {});
+}

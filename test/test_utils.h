@@ -1,0 +1,20 @@
+/*
+ * pcl_tensor: shared helpers for the GoogleTest suite.
+ */
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace pcl_tensor_test
+{
+  /** \brief Path of a file under ../shared/data (third-party scans), or "" when the data is absent. */
+  std::string sharedDataPath (const std::string& relative);
+}
+
+/** Skip the current test, saying clearly why, when a ../shared/data file is missing. */
+#define PCL_TENSOR_REQUIRE_SHARED_DATA(var, relative)                                       \
+  const std::string var = pcl_tensor_test::sharedDataPath (relative);                      \
+  if (var.empty ())                                                                         \
+    GTEST_SKIP () << "SKIPPED: ../shared/data/" << (relative) << " is absent (third-party data)"
