@@ -1,5 +1,6 @@
 #include "test_utils.h"
 
+#include <algorithm>
 #include <fstream>
 
 namespace pcl_tensor_test
@@ -9,5 +10,80 @@ namespace pcl_tensor_test
   {
     const std::string path = std::string (PCL_TENSOR_SHARED_DATA) + "/" + relative;
     return std::ifstream (path).good () ? path : std::string ();
+  }
+
+  Eigen::Isometry3d
+  randomRigidTransform (std::mt19937& rng, double max_translation)
+  {
+    std::normal_distribution<double> gauss;
+    std::uniform_real_distribution<double> uniform (-max_translation, max_translation);
+    Eigen::Quaterniond q (gauss (rng), gauss (rng), gauss (rng), gauss (rng));
+    q.normalize ();
+    Eigen::Isometry3d t = Eigen::Isometry3d::Identity ();
+    t.linear () = q.toRotationMatrix ();
+    t.translation () = Eigen::Vector3d (uniform (rng), uniform (rng), uniform (rng));
+    return t;
+  }
+
+  Eigen::Isometry3d
+  randomExactRigidTransform (std::mt19937& rng, double max_translation)
+  {
+    std::vector<Eigen::Matrix3d> rotations;
+    int perm[3] = {0, 1, 2};
+    do
+      for (int signs = 0; signs < 8; ++signs)
+      {
+        Eigen::Matrix3d r = Eigen::Matrix3d::Zero ();
+        for (int k = 0; k < 3; ++k)
+          r (k, perm[k]) = (signs >> k) & 1 ? -1.0 : 1.0;
+        if (r.determinant () > 0.0)
+          rotations.push_back (r);
+      }
+    while (std::next_permutation (perm, perm + 3));
+    std::uniform_int_distribution<int> pick (0, static_cast<int> (rotations.size ()) - 1);
+    const int steps = static_cast<int> (std::floor (max_translation * 1024.0));
+    std::uniform_int_distribution<int> shift (-steps, steps);
+    Eigen::Isometry3d t = Eigen::Isometry3d::Identity ();
+    t.linear () = rotations[pick (rng)];
+    t.translation () = Eigen::Vector3d (shift (rng), shift (rng), shift (rng)) / 1024.0;
+    return t;
+  }
+
+  double
+  meshAreaInCube (const std::vector<Eigen::Vector3d>& vertices, const std::vector<pcl::Vertices>& polygons,
+                  const Eigen::Vector3d& origin, const Eigen::Matrix3d& frame, double half_extent)
+  {
+    double total = 0.0;
+    for (const auto& poly : polygons)
+    {
+      std::vector<Eigen::Vector3d> p;
+      for (const auto v : poly.vertices)
+        p.push_back (frame * (vertices[v] - origin));
+      // Sutherland-Hodgman against the six half-spaces s * u_axis <= half_extent.
+      for (int axis = 0; axis < 3 && !p.empty (); ++axis)
+        for (const double s : {1.0, -1.0})
+        {
+          std::vector<Eigen::Vector3d> out;
+          for (std::size_t i = 0; i < p.size (); ++i)
+          {
+            const Eigen::Vector3d& a = p[i];
+            const Eigen::Vector3d& b = p[(i + 1) % p.size ()];
+            const double da = s * a[axis] - half_extent;
+            const double db = s * b[axis] - half_extent;
+            if (da <= 0.0)
+              out.push_back (a);
+            if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0))
+              out.push_back (a + (b - a) * (da / (da - db)));
+          }
+          p.swap (out);
+        }
+      if (p.size () < 3)
+        continue;
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
+      for (std::size_t i = 1; i + 1 < p.size (); ++i)
+        sum += (p[i] - p[0]).cross (p[i + 1] - p[0]);
+      total += 0.5 * sum.norm ();
+    }
+    return total;
   }
 }

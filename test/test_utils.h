@@ -4,13 +4,45 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <pcl/Vertices.h>
+#include <Eigen/Geometry>
 
+#include <cmath>
+#include <random>
 #include <string>
+#include <vector>
 
 namespace pcl_tensor_test
 {
   /** \brief Path of a file under ../shared/data (third-party scans), or "" when the data is absent. */
   std::string sharedDataPath (const std::string& relative);
+
+  /** \brief A random rigid transform: rotation uniform on SO(3) (normalised Gaussian quaternion),
+    * translation uniform in [-max_translation, max_translation]^3. */
+  Eigen::Isometry3d randomRigidTransform (std::mt19937& rng, double max_translation = 1.0);
+
+  /** \brief A random rigid transform that float coordinates survive exactly: a rotation from the 24
+    * rotations of the cube (signed axis permutations with determinant +1) and a translation in
+    * multiples of 2^-10 within [-max_translation, max_translation]^3. Applied to coordinates that are
+    * multiples of 2^-20 and smaller than 1 in magnitude, the result is again exact in float. */
+  Eigen::Isometry3d randomExactRigidTransform (std::mt19937& rng, double max_translation = 1.0);
+
+  /** \brief Round \a value to a multiple of \a step (a power of two keeps it exact in float). */
+  inline float quantize (float value, double step)
+  {
+    return static_cast<float> (std::round (static_cast<double> (value) / step) * step);
+  }
+
+  /** \brief Area of a triangle mesh inside the cube |u_k| <= half_extent of a local frame, computed by
+    * clipping every triangle against the six faces of the cube (independent of the tensor code).
+    * \param[in] vertices mesh vertices
+    * \param[in] polygons triangles
+    * \param[in] origin cube centre
+    * \param[in] frame rows x, y, z of the local frame
+    * \param[in] half_extent half the cube's edge
+    */
+  double meshAreaInCube (const std::vector<Eigen::Vector3d>& vertices, const std::vector<pcl::Vertices>& polygons,
+                         const Eigen::Vector3d& origin, const Eigen::Matrix3d& frame, double half_extent);
 }
 
 /** Skip the current test, saying clearly why, when a ../shared/data file is missing. */

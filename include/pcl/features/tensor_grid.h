@@ -1,0 +1,141 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors
+ * (Mian, Bennamoun & Owens, IJCV 2006).
+ */
+#pragma once
+
+#include <pcl/features/tensor_descriptor.h>
+#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/memory.h>
+#include <pcl/point_types.h>
+#include <pcl/Vertices.h>
+#include <Eigen/Core>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace pcl
+{
+  /** \brief The point-type independent core of TensorEstimation: the exact area of a triangle mesh
+    * inside each bin of an N x N x N grid placed in a local frame (Section 2, Fig. 3(d)).
+    *
+    * Each candidate triangle is transformed into the local frame and split successively by the
+    * axis-aligned bin planes with Sutherland-Hodgman half-plane splits: first along x (one convex
+    * piece per x slab), then each piece along y, then along z. Every final piece lies in exactly one
+    * bin and its area is added to that bin. This is exact up to floating-point rounding.
+    *
+    * Faces are visited either by the paper's region growing (start from the faces around the vertex
+    * closest to the origin, and around the two pair vertices, and grow over shared vertices from every
+    * face that meets the grid, stopping when the whole frontier lies outside) or by brute force (every
+    * face whose bounding sphere and then local bounding box meet the grid).
+    *
+    * Not thread-safe: one instance holds scratch buffers. Construct one per thread.
+    * \ingroup features
+    */
+  class TensorSurfaceGrid
+  {
+    public:
+      using Ptr = shared_ptr<TensorSurfaceGrid>;
+      using ConstPtr = shared_ptr<const TensorSurfaceGrid>;
+
+      /** \brief Statistics of the last computeBins() call. */
+      struct Stats
+      {
+        int faces_visited = 0;  ///< faces whose local bounding box was tested
+        int faces_clipped = 0;  ///< faces that met the grid and were clipped
+      };
+
+      /** \brief Set the mesh: vertices and triangles. Triangles with an index out of range or fewer
+        * or more than three vertices are rejected with InvalidScanException; vertices on no face are
+        * allowed (they are never used as region-growing seeds).
+        * \param[in] vertices mesh vertices (finite)
+        * \param[in] polygons triangles as indices into \a vertices
+        * \throw InvalidScanException when there is no triangle or a triangle is malformed
+        */
+      void
+      setMesh (const std::vector<Eigen::Vector3d>& vertices, const std::vector<pcl::Vertices>& polygons);
+
+      /** \brief Number of triangles of the mesh. */
+      std::size_t getNumFaces () const { return faces_.size (); }
+
+      /** \brief Area of the mesh (sum of its triangles). */
+      double getMeshArea () const { return mesh_area_; }
+
+      /** \brief Set the grid: N bins per axis (Section 2, default 10) of size b_s (Eq. 3).
+        * \throw pcl::BadArgumentException when N is not in [1, TENSOR_MAX_GRID_SIZE] or b_s <= 0
+        */
+      void
+      setGrid (int grid_size, double bin_size);
+
+      /** \brief Grid size N. */
+      int getGridSize () const { return grid_size_; }
+      /** \brief Bin size b_s. */
+      double getBinSize () const { return bin_size_; }
+
+      /** \brief Visit faces by region growing (true, the paper's method) or by brute force (false). */
+      void setRegionGrowing (bool region_growing) { region_growing_ = region_growing; }
+      /** \brief Whether faces are visited by region growing. */
+      bool getRegionGrowing () const { return region_growing_; }
+
+      /** \brief Compute the sparse bins of the grid centred at \a origin with axes \a frame (rows).
+        * \param[in] origin grid centre in mesh coordinates
+        * \param[in] frame rows x, y, z of an orthonormal right-handed frame
+        * \param[in] seed_a first pair vertex, used as an extra region-growing seed (-1: none)
+        * \param[in] seed_b second pair vertex, used as an extra region-growing seed (-1: none)
+        * \param[out] bin_index sorted linear indices (i_x N + i_y) N + i_z of the non-zero bins
+        * \param[out] bin_area area inside each of those bins
+        */
+      void
+      computeBins (const Eigen::Vector3d& origin, const Eigen::Matrix3d& frame, int seed_a, int seed_b,
+                   std::vector<std::uint16_t>& bin_index, std::vector<float>& bin_area);
+
+      /** \brief Statistics of the last computeBins() call. */
+      const Stats& getStats () const { return stats_; }
+
+    private:
+      struct Polygon
+      {
+        static constexpr int capacity = 16;
+        double p[capacity][3];
+        int n = 0;
+      };
+
+      void visitFace (int face);
+      void sweep (const Polygon& poly, int axis, int flat_prefix);
+      static void split (const Polygon& in, int axis, double plane, Polygon& below, Polygon& above);
+      void addArea (const Polygon& poly, int bin);
+      const Eigen::Vector3d& localVertex (int v);
+
+      // Mesh.
+      std::vector<Eigen::Vector3d> vertices_;
+      std::vector<std::array<int, 3>> faces_;
+      std::vector<Eigen::Vector3d> face_normals_;      // unit normals (zero for degenerate faces)
+      std::vector<Eigen::Vector3d> face_centres_;      // bounding sphere centres
+      std::vector<double> face_radii_;                 // bounding sphere radii
+      std::vector<int> vertex_face_offsets_;           // CSR: faces around each vertex
+      std::vector<int> vertex_faces_;
+      pcl::KdTreeFLANN<pcl::PointXYZ> seed_tree_;      // vertices that lie on a face
+      std::vector<int> seed_tree_vertices_;
+      double mesh_area_{0.0};
+
+      // Grid.
+      int grid_size_{TENSOR_DEFAULT_GRID_SIZE};
+      double bin_size_{0.0};
+      bool region_growing_{true};
+
+      // Scratch of the current tensor.
+      Eigen::Vector3d origin_{Eigen::Vector3d::Zero ()};
+      Eigen::Matrix3d frame_{Eigen::Matrix3d::Identity ()};
+      double half_extent_{0.0};
+      Eigen::Vector3d current_normal_{Eigen::Vector3d::Zero ()};
+      std::vector<double> dense_;                       // N^3 accumulator, zero between calls
+      std::vector<int> touched_;                        // bins made non-zero in this call
+      std::vector<Eigen::Vector3d> local_;              // local coordinates, valid when stamp matches
+      std::vector<std::uint32_t> local_stamp_;
+      std::vector<std::uint32_t> face_stamp_;
+      std::uint32_t stamp_{0};
+      std::vector<int> queue_;
+      Stats stats_;
+  };
+}

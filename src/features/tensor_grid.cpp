@@ -1,0 +1,348 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors
+ * (Mian, Bennamoun & Owens, IJCV 2006).
+ */
+#include <pcl/features/tensor_grid.h>
+#include <pcl/common/tensor_exceptions.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace pcl
+{
+  void
+  TensorSurfaceGrid::setMesh (const std::vector<Eigen::Vector3d>& vertices,
+                              const std::vector<pcl::Vertices>& polygons)
+  {
+    if (polygons.empty ())
+      PCL_TENSOR_THROW (InvalidScanException, "[pcl::TensorSurfaceGrid::setMesh] the mesh has no polygons");
+    const int n = static_cast<int> (vertices.size ());
+    std::vector<std::array<int, 3>> faces;
+    faces.reserve (polygons.size ());
+    for (std::size_t f = 0; f < polygons.size (); ++f)
+    {
+      const auto& v = polygons[f].vertices;
+      if (v.size () != 3)
+        PCL_TENSOR_THROW (InvalidScanException, "[pcl::TensorSurfaceGrid::setMesh] polygon " << f << " has "
+                          << v.size () << " vertices; only triangles are supported");
+      for (const auto idx : v)
+        if (idx < 0 || idx >= n)
+          PCL_TENSOR_THROW (InvalidScanException, "[pcl::TensorSurfaceGrid::setMesh] polygon " << f
+                            << " refers to vertex " << idx << " of " << n);
+      faces.push_back ({static_cast<int> (v[0]), static_cast<int> (v[1]), static_cast<int> (v[2])});
+    }
+    for (int i = 0; i < n; ++i)
+      if (!vertices[i].allFinite ())
+        PCL_TENSOR_THROW (InvalidScanException, "[pcl::TensorSurfaceGrid::setMesh] vertex " << i << " is not finite");
+
+    vertices_ = vertices;
+    faces_ = std::move (faces);
+    const std::size_t nf = faces_.size ();
+    face_normals_.assign (nf, Eigen::Vector3d::Zero ());
+    face_centres_.assign (nf, Eigen::Vector3d::Zero ());
+    face_radii_.assign (nf, 0.0);
+    mesh_area_ = 0.0;
+    std::vector<int> counts (n + 1, 0);
+    for (std::size_t f = 0; f < nf; ++f)
+    {
+      const auto& t = faces_[f];
+      const Eigen::Vector3d& a = vertices_[t[0]];
+      const Eigen::Vector3d& b = vertices_[t[1]];
+      const Eigen::Vector3d& c = vertices_[t[2]];
+      const Eigen::Vector3d cross = (b - a).cross (c - a);
+      const double norm = cross.norm ();
+      mesh_area_ += 0.5 * norm;
+      if (norm > 0.0)
+        face_normals_[f] = cross / norm;
+      const Eigen::Vector3d centre = (a + b + c) / 3.0;
+      face_centres_[f] = centre;
+      face_radii_[f] = std::max ({(a - centre).norm (), (b - centre).norm (), (c - centre).norm ()});
+      for (const int v : t)
+        ++counts[v + 1];
+    }
+    vertex_face_offsets_.assign (n + 1, 0);
+    for (int i = 0; i < n; ++i)
+      vertex_face_offsets_[i + 1] = vertex_face_offsets_[i] + counts[i + 1];
+    vertex_faces_.assign (vertex_face_offsets_[n], -1);
+    std::vector<int> fill (vertex_face_offsets_.begin (), vertex_face_offsets_.end () - 1);
+    for (std::size_t f = 0; f < nf; ++f)
+      for (const int v : faces_[f])
+        vertex_faces_[fill[v]++] = static_cast<int> (f);
+
+    pcl::PointCloud<pcl::PointXYZ>::Ptr seeds (new pcl::PointCloud<pcl::PointXYZ>);
+    seed_tree_vertices_.clear ();
+    for (int i = 0; i < n; ++i)
+      if (vertex_face_offsets_[i + 1] > vertex_face_offsets_[i])
+      {
+        seeds->push_back (pcl::PointXYZ (static_cast<float> (vertices_[i].x ()), static_cast<float> (vertices_[i].y ()),
+                                         static_cast<float> (vertices_[i].z ())));
+        seed_tree_vertices_.push_back (i);
+      }
+    seed_tree_.setInputCloud (seeds);
+
+    local_.assign (n, Eigen::Vector3d::Zero ());
+    local_stamp_.assign (n, 0);
+    face_stamp_.assign (nf, 0);
+    stamp_ = 0;
+  }
+
+  void
+  TensorSurfaceGrid::setGrid (int grid_size, double bin_size)
+  {
+    if (grid_size < 1 || grid_size > TENSOR_MAX_GRID_SIZE)
+      PCL_TENSOR_THROW (BadArgumentException, "[pcl::TensorSurfaceGrid::setGrid] grid size N = " << grid_size
+                        << " is outside [1, " << TENSOR_MAX_GRID_SIZE << "]");
+    if (!(bin_size > 0.0) || !std::isfinite (bin_size))
+      PCL_TENSOR_THROW (BadArgumentException, "[pcl::TensorSurfaceGrid::setGrid] bin size " << bin_size
+                        << " must be positive and finite");
+    grid_size_ = grid_size;
+    bin_size_ = bin_size;
+    dense_.assign (static_cast<std::size_t> (grid_size) * grid_size * grid_size, 0.0);
+    touched_.clear ();
+  }
+
+  const Eigen::Vector3d&
+  TensorSurfaceGrid::localVertex (int v)
+  {
+    if (local_stamp_[v] != stamp_)
+    {
+      local_[v] = frame_ * (vertices_[v] - origin_);
+      local_stamp_[v] = stamp_;
+    }
+    return local_[v];
+  }
+
+  void
+  TensorSurfaceGrid::split (const Polygon& in, int axis, double plane, Polygon& below, Polygon& above)
+  {
+    below.n = 0;
+    above.n = 0;
+    for (int i = 0; i < in.n; ++i)
+    {
+      const double* cur = in.p[i];
+      const double* nxt = in.p[(i + 1) % in.n];
+      const double dc = cur[axis] - plane;
+      const double dn = nxt[axis] - plane;
+      if (dc <= 0.0 && below.n < Polygon::capacity)
+      {
+        std::copy (cur, cur + 3, below.p[below.n]);
+        ++below.n;
+      }
+      if (dc >= 0.0 && above.n < Polygon::capacity)
+      {
+        std::copy (cur, cur + 3, above.p[above.n]);
+        ++above.n;
+      }
+      if ((dc < 0.0 && dn > 0.0) || (dc > 0.0 && dn < 0.0))
+      {
+        const double t = dc / (dc - dn);
+        double q[3];
+        for (int k = 0; k < 3; ++k)
+          q[k] = cur[k] + t * (nxt[k] - cur[k]);
+        q[axis] = plane;
+        if (below.n < Polygon::capacity)
+        {
+          std::copy (q, q + 3, below.p[below.n]);
+          ++below.n;
+        }
+        if (above.n < Polygon::capacity)
+        {
+          std::copy (q, q + 3, above.p[above.n]);
+          ++above.n;
+        }
+      }
+    }
+  }
+
+  void
+  TensorSurfaceGrid::addArea (const Polygon& poly, int bin)
+  {
+    if (poly.n < 3)
+      return;
+    double sx = 0.0, sy = 0.0, sz = 0.0;
+    const double* o = poly.p[0];
+    for (int i = 1; i + 1 < poly.n; ++i)
+    {
+      const double ax = poly.p[i][0] - o[0], ay = poly.p[i][1] - o[1], az = poly.p[i][2] - o[2];
+      const double bx = poly.p[i + 1][0] - o[0], by = poly.p[i + 1][1] - o[1], bz = poly.p[i + 1][2] - o[2];
+      sx += ay * bz - az * by;
+      sy += az * bx - ax * bz;
+      sz += ax * by - ay * bx;
+    }
+    const double area = 0.5 * std::abs (sx * current_normal_.x () + sy * current_normal_.y () + sz * current_normal_.z ());
+    if (!(area > 0.0))
+      return;
+    if (dense_[bin] == 0.0)
+      touched_.push_back (bin);
+    dense_[bin] += area;
+  }
+
+  void
+  TensorSurfaceGrid::sweep (const Polygon& poly, int axis, int flat_prefix)
+  {
+    if (poly.n < 3)
+      return;
+    double lo = poly.p[0][axis], hi = lo;
+    for (int i = 1; i < poly.n; ++i)
+    {
+      lo = std::min (lo, poly.p[i][axis]);
+      hi = std::max (hi, poly.p[i][axis]);
+    }
+    const int n = grid_size_;
+    const double half_bins = 0.5 * n;
+    if (hi <= -half_extent_ || lo >= half_extent_)
+      return;
+    int i0 = static_cast<int> (std::floor (lo / bin_size_ + half_bins));
+    int i1 = static_cast<int> (std::floor (hi / bin_size_ + half_bins));
+    i0 = std::max (i0, 0);
+    i1 = std::min (i1, n - 1);
+
+    Polygon rem = poly, below, above;
+    const double lower_plane = (i0 - half_bins) * bin_size_;
+    if (lo < lower_plane)
+    {
+      split (rem, axis, lower_plane, below, above);
+      rem = above;
+    }
+    for (int i = i0; i <= i1; ++i)
+    {
+      const double plane = (i + 1 - half_bins) * bin_size_;
+      const Polygon* piece = &rem;
+      bool last = (i == i1);
+      if (hi > plane)
+      {
+        split (rem, axis, plane, below, above);
+        piece = &below;
+      }
+      else
+        last = true;
+      if (axis < 2)
+        sweep (*piece, axis + 1, flat_prefix * n + i);
+      else
+        addArea (*piece, flat_prefix * n + i);
+      if (last)
+        break;
+      rem = above;
+    }
+  }
+
+  void
+  TensorSurfaceGrid::visitFace (int face)
+  {
+    ++stats_.faces_visited;
+    const auto& t = faces_[face];
+    const Eigen::Vector3d& a = localVertex (t[0]);
+    const Eigen::Vector3d& b = localVertex (t[1]);
+    const Eigen::Vector3d& c = localVertex (t[2]);
+    const Eigen::Vector3d lo = a.cwiseMin (b).cwiseMin (c);
+    const Eigen::Vector3d hi = a.cwiseMax (b).cwiseMax (c);
+    const double h = half_extent_;
+    if ((hi.array () <= -h).any () || (lo.array () >= h).any ())
+      return;
+    ++stats_.faces_clipped;
+    if (face_normals_[face].isZero ())
+      return;  // degenerate triangle: no area, but it still connects the region
+    current_normal_ = frame_ * face_normals_[face];
+    Polygon poly;
+    poly.n = 3;
+    for (int k = 0; k < 3; ++k)
+    {
+      poly.p[0][k] = a[k];
+      poly.p[1][k] = b[k];
+      poly.p[2][k] = c[k];
+    }
+    sweep (poly, 0, 0);
+  }
+
+  void
+  TensorSurfaceGrid::computeBins (const Eigen::Vector3d& origin, const Eigen::Matrix3d& frame, int seed_a,
+                                  int seed_b, std::vector<std::uint16_t>& bin_index, std::vector<float>& bin_area)
+  {
+    if (faces_.empty ())
+      PCL_TENSOR_THROW (InvalidScanException, "[pcl::TensorSurfaceGrid::computeBins] no mesh set");
+    if (!(bin_size_ > 0.0))
+      PCL_TENSOR_THROW (BadArgumentException, "[pcl::TensorSurfaceGrid::computeBins] no grid set");
+    origin_ = origin;
+    frame_ = frame;
+    half_extent_ = 0.5 * grid_size_ * bin_size_;
+    stats_ = Stats ();
+    if (++stamp_ == 0)
+    {
+      std::fill (local_stamp_.begin (), local_stamp_.end (), 0u);
+      std::fill (face_stamp_.begin (), face_stamp_.end (), 0u);
+      stamp_ = 1;
+    }
+
+    if (region_growing_)
+    {
+      queue_.clear ();
+      auto push_faces_of = [this] (int v)
+      {
+        for (int k = vertex_face_offsets_[v]; k < vertex_face_offsets_[v + 1]; ++k)
+        {
+          const int g = vertex_faces_[k];
+          if (face_stamp_[g] != stamp_)
+          {
+            face_stamp_[g] = stamp_;
+            queue_.push_back (g);
+          }
+        }
+      };
+      // Seed: the vertex closest to the origin (Section 2), and the two pair vertices.
+      pcl::Indices nn (1);
+      std::vector<float> nn_dist (1);
+      const pcl::PointXYZ o (static_cast<float> (origin.x ()), static_cast<float> (origin.y ()),
+                             static_cast<float> (origin.z ()));
+      if (seed_tree_.nearestKSearch (o, 1, nn, nn_dist) > 0)
+        push_faces_of (seed_tree_vertices_[nn[0]]);
+      const int nv = static_cast<int> (vertices_.size ());
+      if (seed_a >= 0 && seed_a < nv)
+        push_faces_of (seed_a);
+      if (seed_b >= 0 && seed_b < nv)
+        push_faces_of (seed_b);
+      for (std::size_t head = 0; head < queue_.size (); ++head)
+      {
+        const int f = queue_[head];
+        const int clipped_before = stats_.faces_clipped;
+        visitFace (f);
+        if (stats_.faces_clipped == clipped_before)
+          continue;  // completely outside the grid: the region stops here
+        for (const int v : faces_[f])
+          push_faces_of (v);
+      }
+    }
+    else
+    {
+      const double reach = half_extent_ * std::sqrt (3.0);
+      for (std::size_t f = 0; f < faces_.size (); ++f)
+      {
+        const double r = face_radii_[f] + reach;
+        if ((face_centres_[f] - origin).squaredNorm () > r * r)
+          continue;
+        visitFace (static_cast<int> (f));
+      }
+    }
+
+    std::sort (touched_.begin (), touched_.end ());
+    const double min_area = 1e-12 * bin_size_ * bin_size_;
+    bin_index.clear ();
+    bin_area.clear ();
+    std::size_t kept = 0;
+    for (const int b : touched_)
+      if (dense_[b] > min_area)
+        ++kept;
+    bin_index.reserve (kept);
+    bin_area.reserve (kept);
+    for (const int b : touched_)
+    {
+      if (dense_[b] > min_area)
+      {
+        bin_index.push_back (static_cast<std::uint16_t> (b));
+        bin_area.push_back (static_cast<float> (dense_[b]));
+      }
+      dense_[b] = 0.0;
+    }
+    touched_.clear ();
+  }
+}
