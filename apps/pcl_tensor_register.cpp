@@ -1,0 +1,190 @@
+/*
+ * pcl_tensor_register: automatic pairwise registration of two range images (Mian et al., 2006).
+ */
+#include <pcl/common/tensor_exceptions.h>
+#include <pcl/common/transforms.h>
+#include <pcl/console/parse.h>
+#include <pcl/console/print.h>
+#include <pcl/console/time.h>
+#include <pcl/io/ply_io.h>
+#include <pcl/io/range_scan_io.h>
+#include <pcl/registration/tensor_registration.h>
+
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+using namespace pcl::console;
+
+namespace
+{
+  constexpr int kExitRegistered = 0;
+  constexpr int kExitBadInput = 2;
+  constexpr int kExitNotRegistered = 3;
+
+  void
+  printHelp (const char* name)
+  {
+    const pcl::registration::TensorRegistrationParams d;
+    print_info ("Register SCENE to MODEL automatically with tensors (Mian, Bennamoun & Owens, IJCV 2006).\n\n");
+    print_info ("Usage: %s MODEL.{ply,pcd} SCENE.{ply,pcd} [-o aligned.ply] [--json] [options]\n", name);
+    print_info ("Prints the 4x4 transform that maps SCENE into MODEL's frame.\n\n");
+    print_info ("  -o FILE            write SCENE transformed into MODEL's frame (PLY)\n");
+    print_info ("  --json             print a JSON report instead of text\n");
+    print_info ("  --faces N          faces per reduced mesh (default %d)\n", d.preparation.target_faces);
+    print_info ("  --grid N           tensor grid size (default %d)\n", d.grid_size);
+    print_info ("  --tr T             overlap ratio threshold t_r, Eq. 5 (default %g)\n", d.overlap_threshold);
+    print_info ("  --tc T             correlation threshold t_c, Eq. 6 (default %g)\n", d.correlation_threshold);
+    print_info ("  --order best|scene order of hypotheses (default best)\n");
+    print_info ("  --max-hypotheses N give up after N hypotheses, 0 = all (default %d)\n", d.max_hypotheses);
+    print_info ("  --nc F             n_c as a fraction of the smaller view (default %g)\n", d.verification.correspondence_fraction);
+    print_info ("  --dims X,Y,Z       object dimensions D (default: from the two views, Eq. 1)\n");
+    print_info ("  --viewpoint x,y,z  perspective sensor position for both scans (default: file pose; +z for PLY)\n");
+    print_info ("Exit codes: 0 registered, 3 not registered (no hypothesis passed verification), 2 bad input or usage.\n");
+  }
+
+  pcl::registration::TensorRegistrationParams
+  parseParams (int argc, char** argv)
+  {
+    pcl::registration::TensorRegistrationParams p;
+    parse_argument (argc, argv, "--faces", p.preparation.target_faces);
+    parse_argument (argc, argv, "--grid", p.grid_size);
+    parse_argument (argc, argv, "--tr", p.overlap_threshold);
+    parse_argument (argc, argv, "--tc", p.correlation_threshold);
+    parse_argument (argc, argv, "--max-hypotheses", p.max_hypotheses);
+    parse_argument (argc, argv, "--nc", p.verification.correspondence_fraction);
+    std::string order = "best";
+    parse_argument (argc, argv, "--order", order);
+    if (order == "scene")
+      p.order = pcl::registration::TensorMatchOrder::SCENE_ORDER;
+    else if (order != "best")
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "--order must be 'best' or 'scene', got '" << order << "'");
+    return p;
+  }
+
+  std::string
+  jsonReport (const pcl::registration::TensorRegistrationReport& r, double load_ms)
+  {
+    std::ostringstream s;
+    s << std::setprecision (9);
+    s << "{\"status\": \"" << (r.registered ? "registered" : "not_registered") << "\", \"transform\": [";
+    for (int i = 0; i < 16; ++i)
+      s << (i ? ", " : "") << r.transform (i / 4, i % 4);
+    s << "], \"hypotheses_tried\": " << r.hypotheses_tried << ", \"matches\": " << r.matches
+      << ", \"tensors\": {\"model\": " << r.model_tensors << ", \"scene\": " << r.scene_tensors << "}"
+      << ", \"resolution\": " << r.resolution;
+    if (r.registered)
+      s << ", \"winning_match\": {\"model_tensor\": " << r.winning_match.model << ", \"scene_tensor\": " << r.winning_match.scene
+        << ", \"correlation\": " << r.winning_match.correlation << ", \"overlap_ratio\": " << r.winning_match.overlap_ratio
+        << ", \"n_q\": " << r.winning_match.n_q << "}, \"icp_fitness\": " << r.verification.icp_fitness
+        << ", \"fine_correspondences\": " << r.verification.fine_correspondences;
+    s << ", \"failures\": {";
+    for (std::size_t k = 1; k < r.failures.size (); ++k)
+      s << (k > 1 ? ", " : "") << "\"" << pcl::registration::toString (static_cast<pcl::registration::TensorVerificationStage> (k))
+        << "\": " << r.failures[k];
+    s << "}, \"timings_ms\": {\"load\": " << load_ms << ", \"prepare\": " << r.timings.prepare_ms << ", \"tensors\": "
+      << r.timings.tensors_ms << ", \"matching\": " << r.timings.matching_ms << ", \"verification\": "
+      << r.timings.verification_ms << ", \"registration\": " << r.timings.total_ms << "}}";
+    return s.str ();
+  }
+
+  void
+  printText (const pcl::registration::TensorRegistrationReport& r)
+  {
+    if (!r.registered)
+    {
+      print_warn ("NOT REGISTERED: none of %zu hypotheses passed verification\n", r.hypotheses_tried);
+      return;
+    }
+    print_info ("Registered after "); print_value ("%zu", r.hypotheses_tried); print_info (" hypotheses (");
+    print_value ("%zu", r.matches); print_info (" matches of "); print_value ("%zu", r.scene_tensors);
+    print_info (" x "); print_value ("%zu", r.model_tensors); print_info (" tensors) in "); print_value ("%g", r.timings.total_ms);
+    print_info (" ms\n");
+    std::cout << r.transform << std::endl;
+  }
+
+  int
+  run (int argc, char** argv)
+  {
+    std::vector<int> files = parse_file_extension_argument (argc, argv, ".ply");
+    const std::vector<int> pcds = parse_file_extension_argument (argc, argv, ".pcd");
+    files.insert (files.end (), pcds.begin (), pcds.end ());
+    std::sort (files.begin (), files.end ());
+    std::string output;
+    parse_argument (argc, argv, "-o", output);
+    files.erase (std::remove_if (files.begin (), files.end (), [&] (int i) { return argv[i] == output; }), files.end ());
+    if (files.size () != 2)
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "expected MODEL and SCENE files (.ply or .pcd); see --help");
+    const bool json = find_switch (argc, argv, "--json");
+    if (json)
+      setVerbosityLevel (L_ALWAYS);
+
+    pcl::registration::TensorRegistration registration;
+    registration.setParams (parseParams (argc, argv));
+    std::vector<double> dims;
+    if (parse_x_arguments (argc, argv, "--dims", dims) > 0)
+    {
+      if (dims.size () != 3 || !(dims[0] > 0 && dims[1] > 0 && dims[2] > 0))
+        PCL_TENSOR_THROW (pcl::BadArgumentException, "--dims takes three positive numbers X,Y,Z");
+      pcl::ObjectDimensions d;
+      d.D = Eigen::Vector3d (dims[0], dims[1], dims[2]);
+      registration.setObjectDimensions (d);
+    }
+
+    TicToc timer;
+    timer.tic ();
+    const pcl::io::RangeScan model = pcl::io::loadRangeScan (argv[files[0]]);
+    const pcl::io::RangeScan scene = pcl::io::loadRangeScan (argv[files[1]]);
+    const double load_ms = timer.toc ();
+    registration.setInputTarget (model.cloud);
+    registration.setInputSource (scene.cloud);
+    registration.setTargetViewpoint (model.viewpoint);
+    registration.setSourceViewpoint (scene.viewpoint);
+    std::vector<double> viewpoint;
+    if (parse_x_arguments (argc, argv, "--viewpoint", viewpoint) > 0)
+    {
+      if (viewpoint.size () != 3)
+        PCL_TENSOR_THROW (pcl::BadArgumentException, "--viewpoint takes x,y,z");
+      pcl::ScanViewpoint v = pcl::ScanViewpoint::fromPositiveZ ();
+      v.sensor_pose.translation () = Eigen::Vector3d (viewpoint[0], viewpoint[1], viewpoint[2]);
+      v.orthographic = false;
+      registration.setTargetViewpoint (v);
+      registration.setSourceViewpoint (v);
+    }
+
+    pcl::PointCloud<pcl::PointXYZ> aligned;
+    registration.align (aligned);
+    const auto& report = registration.getReport ();
+    if (json)
+      std::cout << jsonReport (report, load_ms) << std::endl;
+    else
+    {
+      print_info ("Loaded both scans in "); print_value ("%g", load_ms); print_info (" ms\n");
+      printText (report);
+    }
+    if (!report.registered)
+      return kExitNotRegistered;
+    if (!output.empty () && pcl::io::savePLYFileBinary (output, aligned) < 0)
+      PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << output << "'");
+    return kExitRegistered;
+  }
+}
+
+int
+main (int argc, char** argv)
+{
+  if (argc < 2 || find_switch (argc, argv, "-h") || find_switch (argc, argv, "--help"))
+  {
+    printHelp (argv[0]);
+    return argc < 2 ? kExitBadInput : 0;
+  }
+  try
+  {
+    return run (argc, argv);
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "pcl_tensor_register: error: " << pcl::errorDescription (e) << std::endl;
+    return kExitBadInput;
+  }
+}

@@ -1,0 +1,108 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#pragma once
+
+#include <pcl/common/object_dimensions.h>
+#include <pcl/features/tensor_descriptor.h>
+#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/registration/correspondence_rejection.h>
+#include <pcl/registration/icp_nl.h>
+#include <pcl/registration/tensor_verification.h>
+#include <pcl/surface/scan_preparation.h>
+
+namespace pcl
+{
+  namespace registration
+  {
+    /** \brief Local verification of tensor matches (Section 4.1; Fig. 7, steps 4 to 14).
+      *
+      * Each correspondence (scene tensor -> model tensor) gives one rigid hypothesis (Eq. 7-8). It
+      * survives only if, in turn: the registered reduced meshes exceed the object's dimensions D by
+      * at most t_D (Eq. 9); at least n_c = min(|M_m|, |M_s|)/4 scene points lie within 2 d_res of the
+      * model; after point-to-plane ICP, at least 2 n_c lie within d_res; and the registered fine
+      * meshes exceed D by at most 2 d_res. verify() runs the test on one hypothesis and reports
+      * where it failed; getRemainingCorrespondences() keeps the correspondences that pass.
+      *
+      * The point hooks of CorrespondenceRejector (requiresSourcePoints() ...) are not used: the test
+      * needs the meshes and tensors of both views, which setModel()/setScene() provide.
+      * \ingroup registration
+      */
+    class CorrespondenceRejectorTensorVerification : public CorrespondenceRejector
+    {
+      public:
+        using Ptr = shared_ptr<CorrespondenceRejectorTensorVerification>;
+        using ConstPtr = shared_ptr<const CorrespondenceRejectorTensorVerification>;
+        using TensorCloudConstPtr = pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr;
+
+        CorrespondenceRejectorTensorVerification () { rejection_name_ = "CorrespondenceRejectorTensorVerification"; }
+
+        /** \brief The model view (target): its fine and reduced meshes, and its tensors. */
+        void setModel (const shared_ptr<const PreparedScan>& scan, const TensorCloudConstPtr& tensors);
+        /** \brief The scene view (source): its fine and reduced meshes, and its tensors. */
+        void setScene (const shared_ptr<const PreparedScan>& scan, const TensorCloudConstPtr& tensors);
+
+        /** \brief The object's dimensions D (Eq. 1), from all its views when known. */
+        void setObjectDimensions (const ObjectDimensions& dims) { dims_ = dims; }
+        const ObjectDimensions& getObjectDimensions () const { return dims_; }
+
+        void setParams (const TensorVerificationParams& params) { params_ = params; }
+        const TensorVerificationParams& getParams () const { return params_; }
+
+        /** \brief Stop after this many correspondences have passed (0: verify them all; default 0). */
+        void setMaxAccepted (std::size_t n) { max_accepted_ = n; }
+        std::size_t getMaxAccepted () const { return max_accepted_; }
+
+        /** \brief d_res used for the distances: the mean of the two fine meshes' resolutions. */
+        double getResolution () const;
+
+        /** \brief Verify one hypothesis that takes scene points into the model's frame.
+          * \param[in] hypothesis the rigid transform of a tensor match (transformFromTensorPair)
+          * \param[out] result the stage reached and the measurements made
+          * \return result.passed ()
+          * \throw pcl::BadArgumentException when the model or the scene is missing
+          */
+        bool verify (const Eigen::Matrix4f& hypothesis, TensorVerificationResult& result);
+
+        /** \brief Keep the correspondences whose hypothesis passes verify(), in order.
+          * The transform of each is available from getAcceptedTransforms(), index for index.
+          */
+        void
+        getRemainingCorrespondences (const pcl::Correspondences& original_correspondences,
+                                     pcl::Correspondences& remaining_correspondences) override;
+
+        /** \brief Refined transforms of the correspondences kept by the last getRemainingCorrespondences(). */
+        const std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>>&
+        getAcceptedTransforms () const { return accepted_transforms_; }
+
+      protected:
+        void
+        applyRejection (pcl::Correspondences& correspondences) override
+        {
+          getRemainingCorrespondences (*input_correspondences_, correspondences);
+        }
+
+      private:
+        using PointCloudN = pcl::PointCloud<pcl::PointNormal>;
+
+        /** Build the model's search tree, the scene sample and ICP's target, once per input. */
+        void prepare ();
+        /** Scene points of \a cloud, under \a t, with a model point within \a radius. */
+        std::size_t countCorrespondences (const PointCloudN& cloud, const Eigen::Matrix4f& t, double radius) const;
+        /** max(D_combined - D) of the model points and the transformed scene points. */
+        double dimensionExcess (const PointCloudN& model, const PointCloudN& scene, const Eigen::Matrix4f& t) const;
+
+        shared_ptr<const PreparedScan> model_, scene_;
+        TensorCloudConstPtr model_tensors_, scene_tensors_;
+        ObjectDimensions dims_;
+        TensorVerificationParams params_;
+        std::size_t max_accepted_{0};
+        bool prepared_{false};
+
+        pcl::KdTreeFLANN<pcl::PointNormal> model_tree_;
+        PointCloudN::Ptr scene_sample_{new PointCloudN};
+        pcl::IterativeClosestPointWithNormals<pcl::PointNormal, pcl::PointNormal> icp_;
+        std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> accepted_transforms_;
+    };
+  }
+}

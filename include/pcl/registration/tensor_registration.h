@@ -1,0 +1,129 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#pragma once
+
+#include <pcl/common/object_dimensions.h>
+#include <pcl/features/tensor_descriptor.h>
+#include <pcl/registration/correspondence_estimation_tensor.h>
+#include <pcl/registration/registration.h>
+#include <pcl/registration/tensor_match.h>
+#include <pcl/registration/tensor_verification.h>
+#include <pcl/surface/scan_preparation.h>
+
+#include <array>
+
+namespace pcl
+{
+  namespace registration
+  {
+    /** \brief Every parameter of the pairwise pipeline, with the paper's values as defaults.
+      * \ingroup registration
+      */
+    struct TensorRegistrationParams
+    {
+      /** Range image -> M_i -> M'_i (Section 2). */
+      ScanPreparationParams preparation;
+      /** Tensor grid N x N x N (Section 2: 10). */
+      int grid_size = 10;
+      /** Closest valid partners per vertex (Section 2: 3). */
+      int partners_per_vertex = 3;
+      /** Minimum mutual angle theta_d of a pair's normals, degrees (Section 2: 5). */
+      double min_normal_angle = 5.0;
+      /** Region growing over faces (the paper's method) rather than testing every face. */
+      bool region_growing = true;
+      /** t_r, minimum overlap ratio R_O (Eq. 5; Section 4: 0.5). */
+      float overlap_threshold = 0.5f;
+      /** t_c, minimum correlation C_c (Eq. 6; Section 4: 0.5). */
+      float correlation_threshold = 0.5f;
+      /** Delta theta_d of the index table, degrees (Section 2: 5). */
+      double theta_bin_width = 5.0;
+      /** The order in which matches are verified. */
+      TensorMatchOrder order = TensorMatchOrder::BEST_FIRST;
+      /** Local verification (Section 4.1). */
+      TensorVerificationParams verification;
+      /** Hypotheses verified at most before giving up (0: all matches). */
+      int max_hypotheses = 0;
+    };
+
+    /** \brief What one pairwise registration did: one object for apps, JSON and the bench. */
+    struct TensorRegistrationReport
+    {
+      bool registered = false;
+      /** Takes scene (source) points into the model's (target) frame; identity when not registered. */
+      Eigen::Matrix4f transform = Eigen::Matrix4f::Identity ();
+      std::size_t model_tensors = 0, scene_tensors = 0;
+      std::size_t matches = 0;           ///< tensor pairs above t_r and t_c
+      std::size_t comparisons = 0;       ///< tensor pairs compared (mu, Eq. 13)
+      std::size_t hypotheses_tried = 0;  ///< matches verified until one passed (or all failed)
+      /** How many hypotheses failed at each stage (index: TensorVerificationStage). */
+      std::array<std::size_t, 5> failures{};
+      TensorMatch winning_match;                ///< valid when registered
+      TensorVerificationResult verification;    ///< of the winning hypothesis when registered
+      double resolution = 0.0;                  ///< d_res used by verification
+      ObjectDimensions dimensions;              ///< D used by verification
+      struct Timings
+      {
+        double prepare_ms = 0.0, tensors_ms = 0.0, matching_ms = 0.0, verification_ms = 0.0, total_ms = 0.0;
+      } timings;
+    };
+
+    /** \brief The tensors of one prepared view (Section 2), with Eq. 2 and Eq. 3 taken from \a dims.
+      * \throw pcl::BadArgumentException or pcl::InvalidScanException on unusable input
+      */
+    pcl::PointCloud<pcl::TensorDescriptor>::Ptr
+    computeViewTensors (const PreparedScan& scan, const ObjectDimensions& dims, const TensorRegistrationParams& params);
+
+    /** \brief Register a prepared scene view to a prepared model view with given tensors: match
+      * (Section 4), then verify hypotheses in order until one passes (Section 4.1).
+      * \param[in,out] report filled in; its timings for preparation and tensors are left as they are
+      */
+    void
+    registerTensorViews (const shared_ptr<const PreparedScan>& model, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& model_tensors,
+                         const shared_ptr<const PreparedScan>& scene, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& scene_tensors,
+                         const ObjectDimensions& dims, const TensorRegistrationParams& params, TensorRegistrationReport& report);
+
+    /** \brief Automatic pairwise registration of range images with tensors (Mian, Bennamoun & Owens,
+      * IJCV 2006), used like pcl::SampleConsensusPrerejective: set the scene as source and the model as
+      * target, call align(). It meshes and reduces both range images, computes their tensors,
+      * matches them, and verifies one hypothesis at a time until one passes local verification.
+      * hasConverged() is false when none does: the views are then reported as not registered, never
+      * with an unverified transform.
+      * \ingroup registration
+      */
+    class TensorRegistration : public Registration<pcl::PointXYZ, pcl::PointXYZ, float>
+    {
+      public:
+        using Ptr = shared_ptr<TensorRegistration>;
+        using ConstPtr = shared_ptr<const TensorRegistration>;
+
+        TensorRegistration () { reg_name_ = "TensorRegistration"; }
+
+        void setParams (const TensorRegistrationParams& params) { params_ = params; }
+        const TensorRegistrationParams& getParams () const { return params_; }
+
+        /** \brief Sensors of the scene (source) and model (target); default: +z (ScanViewpoint::fromPositiveZ). */
+        void setSourceViewpoint (const ScanViewpoint& v) { source_viewpoint_ = v; }
+        void setTargetViewpoint (const ScanViewpoint& v) { target_viewpoint_ = v; }
+
+        /** \brief The object's dimensions D, from all its views (Eq. 1). Without it, D comes from the
+          * two views alone, which underestimates the object when the views cover little of it.
+          */
+        void setObjectDimensions (const ObjectDimensions& dims) { dims_ = dims; has_dims_ = true; }
+
+        /** \brief What the last align() did. */
+        const TensorRegistrationReport& getReport () const { return report_; }
+
+      protected:
+        void computeTransformation (PointCloudSource& output, const Matrix4& guess) override;
+
+      private:
+        TensorRegistrationParams params_;
+        ScanViewpoint source_viewpoint_ = ScanViewpoint::fromPositiveZ ();
+        ScanViewpoint target_viewpoint_ = ScanViewpoint::fromPositiveZ ();
+        ObjectDimensions dims_;
+        bool has_dims_{false};
+        TensorRegistrationReport report_;
+    };
+  }
+}

@@ -1,0 +1,73 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#pragma once
+
+#include <Eigen/Core>
+
+#include <string>
+
+namespace pcl
+{
+  namespace registration
+  {
+    /** \brief Thresholds of the local verification of Section 4.1 (Fig. 7, steps 4-14), with the
+      * paper's values as defaults. Distances are in units of d_res, the fine meshes' resolution.
+      * \ingroup registration
+      */
+    struct TensorVerificationParams
+    {
+      /** t_D = mean(D) * this: how far the coarsely registered reduced meshes may exceed D (1/10). */
+      double coarse_dimension_fraction = 0.1;
+      /** n_c = min(|M_m|, |M_s|) * this: correspondences needed before ICP; twice as many after (1/4). */
+      double correspondence_fraction = 0.25;
+      /** A correspondence before ICP: points within this many d_res (2). */
+      double coarse_distance = 2.0;
+      /** A correspondence after ICP: points within this many d_res (1). */
+      double fine_distance = 1.0;
+      /** How far the refined registration's combined dimensions may exceed D, in d_res (2). */
+      double fine_dimension_tolerance = 2.0;
+      /** ICP (point-to-plane, Rusinkiewicz and Levoy's variant): iterations at most. */
+      int icp_iterations = 30;
+      /** ICP: pairs farther apart than this many d_res are not used. */
+      double icp_max_distance = 4.0;
+      /** Scene points sampled (evenly, deterministically) for ICP and the count before ICP. */
+      int sample_points = 3000;
+    };
+
+    /** \brief The stage at which a hypothesis failed local verification. */
+    enum class TensorVerificationStage
+    {
+      PASSED,
+      COARSE_DIMENSIONS,  ///< max(D'_ms - D) > t_D (Eq. 9 on the reduced meshes)
+      COARSE_OVERLAP,     ///< fewer than n_c correspondences within 2 d_res
+      FINE_OVERLAP,       ///< after ICP, fewer than 2 n_c correspondences within d_res
+      FINE_DIMENSIONS     ///< after ICP, max(D_ms - D) > 2 d_res
+    };
+
+    /** \brief Name of a stage, for reports. */
+    std::string
+    toString (TensorVerificationStage stage);
+
+    /** \brief What local verification found for one hypothesis. */
+    struct TensorVerificationResult
+    {
+      TensorVerificationStage stage = TensorVerificationStage::COARSE_DIMENSIONS;
+      /** The hypothesis refined by ICP (the hypothesis itself when ICP was not reached). */
+      Eigen::Matrix4f transform = Eigen::Matrix4f::Identity ();
+      /** max(D'_ms - D), the excess of the coarsely registered reduced meshes (Eq. 9). */
+      double coarse_dimension_excess = 0.0;
+      /** Correspondences within 2 d_res before ICP, estimated from the sample, and n_c. */
+      double coarse_correspondences = 0.0;
+      double required_correspondences = 0.0;
+      /** Correspondences within d_res after ICP, over every scene point. */
+      double fine_correspondences = 0.0;
+      /** max(D_ms - D) after ICP, in d_res. */
+      double fine_dimension_excess = 0.0;
+      /** ICP's fitness score (mean squared distance of its pairs). */
+      double icp_fitness = 0.0;
+
+      bool passed () const { return stage == TensorVerificationStage::PASSED; }
+    };
+  }
+}

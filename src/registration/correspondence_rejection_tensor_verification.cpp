@@ -1,0 +1,186 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#include <pcl/registration/correspondence_rejection_tensor_verification.h>
+#include <pcl/registration/tensor_match.h>
+#include <pcl/common/tensor_exceptions.h>
+#include <pcl/common/transforms.h>
+
+namespace pcl
+{
+  namespace registration
+  {
+    std::string
+    toString (TensorVerificationStage stage)
+    {
+      switch (stage)
+      {
+        case TensorVerificationStage::PASSED: return "passed";
+        case TensorVerificationStage::COARSE_DIMENSIONS: return "coarse_dimensions";
+        case TensorVerificationStage::COARSE_OVERLAP: return "coarse_overlap";
+        case TensorVerificationStage::FINE_OVERLAP: return "fine_overlap";
+        case TensorVerificationStage::FINE_DIMENSIONS: return "fine_dimensions";
+      }
+      return "unknown";
+    }
+
+    void
+    CorrespondenceRejectorTensorVerification::setModel (const shared_ptr<const PreparedScan>& scan, const TensorCloudConstPtr& tensors)
+    {
+      model_ = scan;
+      model_tensors_ = tensors;
+      prepared_ = false;
+    }
+
+    void
+    CorrespondenceRejectorTensorVerification::setScene (const shared_ptr<const PreparedScan>& scan, const TensorCloudConstPtr& tensors)
+    {
+      scene_ = scan;
+      scene_tensors_ = tensors;
+      prepared_ = false;
+    }
+
+    double
+    CorrespondenceRejectorTensorVerification::getResolution () const
+    {
+      return model_ && scene_ ? 0.5 * (model_->resolution + scene_->resolution) : 0.0;
+    }
+
+    void
+    CorrespondenceRejectorTensorVerification::prepare ()
+    {
+      if (prepared_)
+        return;
+      if (!model_ || !scene_ || model_->fine.cloud->empty () || scene_->fine.cloud->empty ())
+        PCL_TENSOR_THROW (BadArgumentException, "verification needs the prepared model and scene views");
+      model_tree_.setInputCloud (model_->fine.cloud);
+
+      // An even, deterministic sample: every k-th fine scene vertex.
+      const PointCloudN& scene = *scene_->fine.cloud;
+      const std::size_t step = std::max<std::size_t> (1, scene.size () / static_cast<std::size_t> (std::max (1, params_.sample_points)));
+      scene_sample_.reset (new PointCloudN);
+      for (std::size_t i = 0; i < scene.size (); i += step)
+        scene_sample_->push_back (scene[i]);
+
+      icp_.setInputTarget (model_->fine.cloud);
+      icp_.setInputSource (scene_sample_);
+      prepared_ = true;
+    }
+
+    std::size_t
+    CorrespondenceRejectorTensorVerification::countCorrespondences (const PointCloudN& cloud, const Eigen::Matrix4f& t,
+                                                                   double radius) const
+    {
+      const float r2 = static_cast<float> (radius * radius);
+      pcl::Indices index (1);
+      std::vector<float> d2 (1);
+      std::size_t count = 0;
+      pcl::PointNormal q;
+      for (const auto& p : cloud)
+      {
+        q.getVector4fMap () = t * p.getVector4fMap ();
+        if (model_tree_.nearestKSearch (q, 1, index, d2) == 1 && d2[0] <= r2)
+          ++count;
+      }
+      return count;
+    }
+
+    double
+    CorrespondenceRejectorTensorVerification::dimensionExcess (const PointCloudN& model, const PointCloudN& scene,
+                                                               const Eigen::Matrix4f& t) const
+    {
+      std::vector<Eigen::Vector3d> points;
+      points.reserve (model.size () + scene.size ());
+      for (const auto& p : model)
+        points.push_back (p.getVector3fMap ().cast<double> ());
+      const Eigen::Matrix4d td = t.cast<double> ();
+      for (const auto& p : scene)
+        points.push_back ((td * p.getVector4fMap ().cast<double> ()).head<3> ());
+      return (principalExtents (points) - dims_.D).maxCoeff ();
+    }
+
+    bool
+    CorrespondenceRejectorTensorVerification::verify (const Eigen::Matrix4f& hypothesis, TensorVerificationResult& result)
+    {
+      prepare ();
+      result = TensorVerificationResult ();
+      result.transform = hypothesis;
+      const double d_res = getResolution ();
+
+      // Steps 4-6: the reduced meshes, coarsely registered, must fit the object (Eq. 9, t_D).
+      result.coarse_dimension_excess = dimensionExcess (*model_->reduced.cloud, *scene_->reduced.cloud, hypothesis);
+      if (result.coarse_dimension_excess > params_.coarse_dimension_fraction * dims_.mean ())
+      {
+        result.stage = TensorVerificationStage::COARSE_DIMENSIONS;
+        return false;
+      }
+
+      // Steps 7-9: enough scene points near the model (n_c), estimated on the sample.
+      const double scale = static_cast<double> (scene_->fine.cloud->size ()) / static_cast<double> (scene_sample_->size ());
+      result.required_correspondences = params_.correspondence_fraction *
+          static_cast<double> (std::min (model_->fine.cloud->size (), scene_->fine.cloud->size ()));
+      result.coarse_correspondences = scale * static_cast<double> (
+          countCorrespondences (*scene_sample_, hypothesis, params_.coarse_distance * d_res));
+      if (result.coarse_correspondences < result.required_correspondences)
+      {
+        result.stage = TensorVerificationStage::COARSE_OVERLAP;
+        return false;
+      }
+
+      // Step 10: refine with point-to-plane ICP.
+      icp_.setMaxCorrespondenceDistance (params_.icp_max_distance * d_res);
+      icp_.setMaximumIterations (params_.icp_iterations);
+      icp_.setTransformationEpsilon (1e-12);
+      icp_.setEuclideanFitnessEpsilon (0.0);
+      PointCloudN aligned;
+      icp_.align (aligned, hypothesis);
+      result.transform = icp_.getFinalTransformation ();
+      result.icp_fitness = icp_.getFitnessScore ();
+
+      // Steps 11-12: twice n_c scene points within d_res, over every scene point.
+      result.fine_correspondences = static_cast<double> (
+          countCorrespondences (*scene_->fine.cloud, result.transform, params_.fine_distance * d_res));
+      if (result.fine_correspondences < 2.0 * result.required_correspondences)
+      {
+        result.stage = TensorVerificationStage::FINE_OVERLAP;
+        return false;
+      }
+
+      // Steps 13-14: the registered fine meshes must fit the object within 2 d_res (Eq. 9).
+      result.fine_dimension_excess = dimensionExcess (*model_->fine.cloud, *scene_->fine.cloud, result.transform) / d_res;
+      if (result.fine_dimension_excess > params_.fine_dimension_tolerance)
+      {
+        result.stage = TensorVerificationStage::FINE_DIMENSIONS;
+        return false;
+      }
+      result.stage = TensorVerificationStage::PASSED;
+      return true;
+    }
+
+    void
+    CorrespondenceRejectorTensorVerification::getRemainingCorrespondences (const pcl::Correspondences& original,
+                                                                          pcl::Correspondences& remaining)
+    {
+      if (!model_tensors_ || !scene_tensors_)
+        PCL_TENSOR_THROW (BadArgumentException, "verification of correspondences needs the model and scene tensors");
+      pcl::Correspondences kept;
+      accepted_transforms_.clear ();
+      for (const auto& c : original)
+      {
+        if (max_accepted_ > 0 && kept.size () >= max_accepted_)
+          break;
+        if (c.index_query < 0 || static_cast<std::size_t> (c.index_query) >= scene_tensors_->size ()
+            || c.index_match < 0 || static_cast<std::size_t> (c.index_match) >= model_tensors_->size ())
+          PCL_TENSOR_THROW (BadArgumentException, "correspondence " << c.index_query << " -> " << c.index_match
+                            << " is outside the tensor clouds");
+        TensorVerificationResult result;
+        if (verify (transformFromTensorPair ((*model_tensors_)[c.index_match], (*scene_tensors_)[c.index_query]), result))
+        {
+          kept.push_back (c);
+          accepted_transforms_.push_back (result.transform);
+        }
+      }
+      remaining.swap (kept);
+    }
+  }
+}

@@ -1,0 +1,114 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#include <pcl/registration/tensor_registration.h>
+#include <pcl/common/tensor_exceptions.h>
+#include <pcl/common/time.h>
+#include <pcl/common/transforms.h>
+#include <pcl/features/tensor.h>
+#include <pcl/registration/correspondence_rejection_tensor_verification.h>
+
+namespace pcl
+{
+  namespace registration
+  {
+    pcl::PointCloud<pcl::TensorDescriptor>::Ptr
+    computeViewTensors (const PreparedScan& scan, const ObjectDimensions& dims, const TensorRegistrationParams& params)
+    {
+      pcl::TensorEstimation<pcl::PointNormal, pcl::PointNormal, pcl::TensorDescriptor> estimation;
+      estimation.setInputCloud (scan.reduced.cloud);
+      estimation.setInputNormals (scan.reduced.cloud);
+      estimation.setPolygons (scan.reduced.polygons);
+      estimation.setObjectDimensions (dims);
+      estimation.setGridSize (params.grid_size);
+      estimation.setPartnersPerVertex (params.partners_per_vertex);
+      estimation.setMinNormalAngle (params.min_normal_angle);
+      estimation.setRegionGrowing (params.region_growing);
+      pcl::PointCloud<pcl::TensorDescriptor>::Ptr tensors (new pcl::PointCloud<pcl::TensorDescriptor>);
+      estimation.computeOrThrow (*tensors);
+      return tensors;
+    }
+
+    void
+    registerTensorViews (const shared_ptr<const PreparedScan>& model, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& model_tensors,
+                         const shared_ptr<const PreparedScan>& scene, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& scene_tensors,
+                         const ObjectDimensions& dims, const TensorRegistrationParams& params, TensorRegistrationReport& report)
+    {
+      pcl::StopWatch watch;
+      CorrespondenceEstimationTensor estimation;
+      estimation.setOverlapThreshold (params.overlap_threshold);
+      estimation.setCorrelationThreshold (params.correlation_threshold);
+      estimation.setThetaBinWidth (params.theta_bin_width);
+      estimation.setOrder (params.order);
+      estimation.setInputSource (scene_tensors);
+      estimation.setInputTarget (model_tensors);
+      pcl::Correspondences correspondences;
+      estimation.determineCorrespondences (correspondences);
+      report.model_tensors = model_tensors->size ();
+      report.scene_tensors = scene_tensors->size ();
+      report.matches = correspondences.size ();
+      report.comparisons = estimation.getComparisons ();
+      report.timings.matching_ms = watch.getTime ();
+
+      watch.reset ();
+      CorrespondenceRejectorTensorVerification verification;
+      verification.setModel (model, model_tensors);
+      verification.setScene (scene, scene_tensors);
+      verification.setObjectDimensions (dims);
+      verification.setParams (params.verification);
+      report.resolution = verification.getResolution ();
+      report.dimensions = dims;
+      report.registered = false;
+      report.transform = Eigen::Matrix4f::Identity ();
+      report.failures.fill (0);
+      report.hypotheses_tried = 0;
+      const std::vector<TensorMatch>& matches = estimation.getMatches ();
+      for (const TensorMatch& match : matches)
+      {
+        if (params.max_hypotheses > 0 && report.hypotheses_tried >= static_cast<std::size_t> (params.max_hypotheses))
+          break;
+        const TensorDescriptor& scene_tensor = (*scene_tensors)[match.scene];
+        const Eigen::Matrix4f hypothesis = transformFromTensorPair (
+            (*model_tensors)[match.model], match.scene_flipped ? flipPairOrder (scene_tensor) : scene_tensor);
+        ++report.hypotheses_tried;
+        TensorVerificationResult result;
+        if (verification.verify (hypothesis, result))
+        {
+          report.registered = true;
+          report.transform = result.transform;
+          report.winning_match = match;
+          report.verification = result;
+          break;
+        }
+        ++report.failures[static_cast<std::size_t> (result.stage)];
+      }
+      report.timings.verification_ms = watch.getTime ();
+    }
+
+    void
+    TensorRegistration::computeTransformation (PointCloudSource& output, const Matrix4& guess)
+    {
+      (void) guess;  // the method is global: it needs no initial guess
+      pcl::StopWatch total, watch;
+      report_ = TensorRegistrationReport ();
+      auto model = std::make_shared<PreparedScan> (prepareScan (*target_, target_viewpoint_, params_.preparation));
+      auto scene = std::make_shared<PreparedScan> (prepareScan (*input_, source_viewpoint_, params_.preparation));
+      report_.timings.prepare_ms = watch.getTime ();
+
+      const ObjectDimensions dims = has_dims_ ? dims_
+          : computeObjectDimensions<pcl::PointNormal> ({model->fine.cloud.get (), scene->fine.cloud.get ()});
+      watch.reset ();
+      const auto model_tensors = computeViewTensors (*model, dims, params_);
+      const auto scene_tensors = computeViewTensors (*scene, dims, params_);
+      report_.timings.tensors_ms = watch.getTime ();
+
+      registerTensorViews (model, model_tensors, scene, scene_tensors, dims, params_, report_);
+      converged_ = report_.registered;
+      final_transformation_ = report_.transform;
+      transformation_ = report_.transform;
+      if (converged_)
+        pcl::transformPointCloud (*input_, output, final_transformation_);
+      report_.timings.total_ms = total.getTime ();
+    }
+  }
+}
