@@ -17,7 +17,8 @@ namespace pcl
       * row, the vertex of each cell (or none for a NaN cell). pcl::io::loadRangeScan() reads it back as
       * an organized cloud with the same NaN pattern and, thanks to 9 significant digits, the same floats.
       *
-      * It relies on pcl::PLYWriter, which writes the range_grid element when asked not to write a camera.
+      * pcl::PLYWriter can write a range_grid too (use_camera = false), but it prints floats with 6
+      * significant digits whatever precision it is given, so its round trip is not exact.
       * \throw pcl::BadArgumentException when the cloud is not organized (height < 2) or has fewer than one
       * finite point
       * \throw pcl::IOException when the file cannot be written
