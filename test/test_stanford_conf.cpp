@@ -3,8 +3,15 @@
  */
 #include "test_utils.h"
 
+#include <pcl/common/point_tests.h>
 #include <pcl/common/tensor_exceptions.h>
+#include <pcl/io/range_scan_io.h>
+#include <pcl/io/scan_mesh_io.h>
 #include <pcl/io/stanford_conf.h>
+#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/surface/range_scan_triangulation.h>
+
+#include <algorithm>
 
 #include <cstdio>
 #include <fstream>
@@ -12,6 +19,26 @@
 
 namespace
 {
+  /** Median distance from the scan's finite points, mapped by \a pose, to the nearest model vertex. */
+  double
+  medianDistance (const pcl::PointCloud<pcl::PointXYZ>& scan, const Eigen::Affine3d& pose,
+                  const pcl::KdTreeFLANN<pcl::PointXYZ>& model)
+  {
+    std::vector<double> d;
+    pcl::Indices nn (1);
+    std::vector<float> sq (1);
+    for (const auto& p : scan)
+      if (pcl::isXYZFinite (p))
+      {
+        pcl::PointXYZ q;
+        q.getVector3fMap () = (pose * p.getVector3fMap ().cast<double> ()).cast<float> ();
+        model.nearestKSearch (q, 1, nn, sq);
+        d.push_back (std::sqrt (sq[0]));
+      }
+    std::nth_element (d.begin (), d.begin () + d.size () / 2, d.end ());
+    return d[d.size () / 2];
+  }
+
   std::string
   writeText (const std::string& name, const std::string& text)
   {
@@ -93,4 +120,37 @@ TEST (StanfordConf, ReadsBunConf)
   EXPECT_TRUE (entries[0].pose ().isApprox (Eigen::Affine3d::Identity (), 1e-15));
   for (const auto& e : entries)
     EXPECT_NEAR (e.quaternion.norm (), 1.0, 1e-5) << e.file;
+}
+
+// The real poses align the real scans with the reconstruction: median nearest-vertex distance within
+// 1.5 d_res (d_res of each scan's own triangulation). The transposed convention, R(q) p + t, must not
+// pass for the scans that are turned by more than a few degrees: this is what the test tells apart.
+TEST (StanfordConf, BunConfAlignsTheScansWithTheReconstruction)
+{
+  PCL_TENSOR_REQUIRE_SHARED_DATA (conf, "stanford/bunny/bun.conf");
+  PCL_TENSOR_REQUIRE_SHARED_DATA (model_path, "stanford/bunny/bun_zipper.ply");
+  const std::string dir = conf.substr (0, conf.find_last_of ('/') + 1);
+  const auto model = pcl::io::loadScanMesh (model_path);
+  pcl::PointCloud<pcl::PointXYZ>::Ptr vertices (new pcl::PointCloud<pcl::PointXYZ>);
+  for (const auto& p : *model.cloud)
+    vertices->push_back (pcl::PointXYZ (p.x, p.y, p.z));
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setInputCloud (vertices);
+  int wrong_convention_fails = 0;
+  for (const auto& e : pcl::io::loadStanfordConf (conf))
+  {
+    const auto scan = pcl::io::loadRangeScan (dir + e.file);
+    ASSERT_TRUE (scan.cloud->isOrganized ()) << e.file;
+    pcl::RangeScanTriangulation triangulation;
+    triangulation.setViewpoint (scan.viewpoint);
+    pcl::ScanMesh mesh;
+    triangulation.triangulate (*scan.cloud, mesh);
+    const double d_res = pcl::meshResolution (mesh);
+    const double median = medianDistance (*scan.cloud, e.pose (), tree);
+    EXPECT_LE (median, 1.5 * d_res) << e.file << ": median " << median << " m, d_res " << d_res << " m";
+    Eigen::Affine3d transposed = e.pose ();
+    transposed.linear () = e.quaternion.normalized ().toRotationMatrix ();
+    wrong_convention_fails += medianDistance (*scan.cloud, transposed, tree) > 1.5 * d_res ? 1 : 0;
+  }
+  EXPECT_GE (wrong_convention_fails, 8);
 }

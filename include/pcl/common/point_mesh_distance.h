@@ -13,7 +13,12 @@
 
 namespace pcl
 {
-  /** \brief Exact Euclidean distance from a point to a triangle (closest point by Voronoi regions). */
+  /** \brief Exact Euclidean distance from a point to a triangle (closest point by Voronoi regions).
+    * \param[in] p the point
+    * \param[in] a, b, c the triangle's corners
+    * \return the distance from \a p to the closest point of the triangle
+    * \ingroup common
+    */
   double
   pointTriangleDistance (const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                          const Eigen::Vector3d& c);
@@ -33,6 +38,7 @@ namespace pcl
       using Ptr = shared_ptr<PointMeshDistance>;
       using ConstPtr = shared_ptr<const PointMeshDistance>;
 
+      /** \brief An empty index; call setMesh() before distance(). */
       PointMeshDistance ();
       ~PointMeshDistance ();
 

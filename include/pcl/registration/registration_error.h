@@ -9,7 +9,9 @@
 
 namespace pcl
 {
-  /** \brief The errors of an estimated rigid transformation against the ground truth (Section 7.1). */
+  /** \brief The errors of an estimated rigid transformation against the ground truth (Section 7.1).
+    * \ingroup registration
+    */
   struct RegistrationError
   {
     /** \brief theta_e of Eq. 11, in degrees. */
@@ -43,6 +45,10 @@ namespace pcl
                                double resolution);
 
   /** \brief Both errors of Section 7.1 for an estimated rigid transformation.
+    * \param[in] estimate the estimated transformation (R_i, t_i)
+    * \param[in] ground_truth the true transformation (R_iGT, t_iGT)
+    * \param[in] resolution d_res
+    * \return theta_e (Eq. 11) and t_e (Eq. 12)
     * \throw pcl::BadArgumentException when \a resolution is not positive and finite
     * \ingroup registration
     */

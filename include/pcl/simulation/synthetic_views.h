@@ -12,7 +12,9 @@
 
 namespace pcl
 {
-  /** \brief How a set of synthetic range images is made from a model (Sections 6, 7.1 and 7.5). */
+  /** \brief How a set of synthetic range images is made from a model (Sections 6, 7.1 and 7.5).
+    * \ingroup simulation
+    */
   struct SyntheticViewParams
   {
     /** The camera. For an orthographic camera, ortho_extent is replaced by one that fits the model. */
@@ -27,7 +29,9 @@ namespace pcl
     Eigen::Vector3d up = Eigen::Vector3d::UnitY ();
   };
 
-  /** \brief One synthetic range image with its ground truth and resolution. */
+  /** \brief One synthetic range image with its ground truth and resolution.
+    * \ingroup simulation
+    */
   struct SyntheticView
   {
     /** The range image in the sensor frame, and its pose into the model frame. */
@@ -38,6 +42,10 @@ namespace pcl
 
   /** \brief Render the model from sensors looking at its centre along \a directions, fitted to the view,
     * and add the requested noise.
+    * \param[in] model the triangle mesh to view
+    * \param[in] directions unit directions from the model's centre toward each sensor (e.g. makeDefaultViewDirections())
+    * \param[in] params camera, margin, noise and seed
+    * \return one view per direction, in order
     * \throw pcl::BadArgumentException on bad parameters (see ZBufferRangeRenderer, fittingDistance, noise)
     * \throw InvalidScanException when the model has no triangle or a view sees fewer than 3 points
     * \ingroup simulation

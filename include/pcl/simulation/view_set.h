@@ -18,7 +18,9 @@ namespace pcl
     */
   using ViewDirections = std::vector<Eigen::Vector3d, Eigen::aligned_allocator<Eigen::Vector3d>>;
 
-  /** \brief Sensor poses (sensor frame -> model frame), one per view. */
+  /** \brief Sensor poses (sensor frame -> model frame), one per view; also the explicit form of a view set.
+    * \ingroup simulation
+    */
   using SensorPoses = std::vector<Eigen::Affine3d, Eigen::aligned_allocator<Eigen::Affine3d>>;
 
   /** \brief The 26 view directions of Sections 6 and 7.1: 12 on the equator 30 degrees apart, 6 on
@@ -50,11 +52,16 @@ namespace pcl
     */
   struct ViewTarget
   {
+    /** The point every sensor looks at. */
     Eigen::Vector3d centre = Eigen::Vector3d::Zero ();
+    /** Radius of the sphere around \a centre that holds the whole model. */
     double radius = 0.0;
   };
 
   /** \brief The bounding sphere of the mesh's vertices, centred on their bounding box.
+    * \param[in] mesh the model
+    * \return its centre and radius
+    * \ingroup simulation
     * \throw InvalidScanException when the mesh has no vertices
     */
   ViewTarget
@@ -63,18 +70,34 @@ namespace pcl
   /** \brief Distance from the target's centre at which the whole bounding sphere fits in the camera's
     * field of view (perspective: within the narrower of the horizontal and vertical angles), with
     * a margin factor. For an orthographic camera it is 2 radii (any distance outside works).
+    * \param[in] target the model's bounding sphere
+    * \param[in] camera the camera (size and field of view)
+    * \param[in] margin how much larger than the sphere the view is (>= 1)
+    * \return the distance from the centre to the sensor
+    * \ingroup simulation
     * \throw pcl::BadArgumentException on a non-positive radius or margin < 1
     */
   double
   fittingDistance (const ViewTarget& target, const RangeCameraParams& camera, double margin = 1.05);
 
-  /** \brief The orthographic extent that fits the target's bounding sphere, with a margin factor. */
+  /** \brief The orthographic extent (image width in metres) that fits the target's bounding sphere.
+    * \param[in] target the model's bounding sphere
+    * \param[in] camera the camera (its aspect ratio is used)
+    * \param[in] margin how much larger than the sphere the view is (>= 1)
+    * \return the value for RangeCameraParams::ortho_extent
+    * \throw pcl::BadArgumentException on a non-positive radius or margin < 1
+    * \ingroup simulation
+    */
   double
   fittingOrthoExtent (const ViewTarget& target, const RangeCameraParams& camera, double margin = 1.05);
 
   /** \brief Sensor poses looking at \a target.centre from \a distance along each direction. The sensor
     * looks down its -z axis (RangeCameraParams), so its +z axis is the direction itself; its y axis
     * is as close to \a up as possible (x when the direction is parallel to \a up).
+    * \param[in] directions unit directions from the centre toward each sensor
+    * \param[in] target what the sensors look at
+    * \param[in] distance from the centre to each sensor
+    * \param[in] up the image's up direction
     * \return one pose per direction, mapping sensor-frame points into the model frame
     * \ingroup simulation
     */
@@ -84,12 +107,21 @@ namespace pcl
 
   /** \brief For each view, the indices of the views whose direction is within \a tolerance_deg of
     * \a angle_deg away (default: 30 +- 2 degrees, the paper's adjacent views).
+    *
+    * Note that in the default set this links each ring to its pole and the equator only to itself: the
+    * rings are about 64 degrees from the equator, so the 30-degree graph has three components.
+    * \param[in] directions the view directions
+    * \param[in] angle_deg the angle between neighbours, in degrees
+    * \param[in] tolerance_deg the accepted deviation from \a angle_deg
+    * \return for each view, its neighbours' indices in increasing order
     * \ingroup simulation
     */
   std::vector<std::vector<int>>
   viewNeighbours (const ViewDirections& directions, double angle_deg = 30.0, double tolerance_deg = 2.0);
 
-  /** \brief The adjacent pairs (i < j) of viewNeighbours(), each pair once, sorted. */
+  /** \brief The adjacent pairs (i < j) of viewNeighbours(), each pair once, sorted: the pairs to register.
+    * \ingroup simulation
+    */
   std::vector<std::pair<int, int>>
   adjacentViewPairs (const ViewDirections& directions, double angle_deg = 30.0, double tolerance_deg = 2.0);
 }

@@ -45,9 +45,12 @@ namespace pcl
     ScanViewpoint viewpoint;
   };
 
-  /** \brief A pixel's line of sight in the sensor frame: origin + t * direction, t > 0. */
+  /** \brief A pixel's line of sight in the sensor frame: origin + t * direction, t > 0.
+    * \ingroup simulation
+    */
   struct PixelRay
   {
+    /** Perspective: the sensor's centre (0, 0, 0); orthographic: the pixel centre on the plane z = 0. */
     Eigen::Vector3d origin = Eigen::Vector3d::Zero ();
     /** Not normalized: the perspective direction has z = -1, the orthographic one is (0, 0, -1). */
     Eigen::Vector3d direction = -Eigen::Vector3d::UnitZ ();
@@ -73,11 +76,12 @@ namespace pcl
         */
       void setMesh (const ScanMesh& mesh);
 
-      /** \brief Set the camera.
+      /** \brief Set the camera (default: RangeCameraParams{}).
         * \throw pcl::BadArgumentException on a non-positive size, a fov outside (0, 180) degrees or a
         * non-positive orthographic extent
         */
       void setCameraParams (const RangeCameraParams& params);
+      /** \brief The camera in use. */
       const RangeCameraParams& getCameraParams () const { return params_; }
 
       /** \brief Render the mesh seen by a sensor placed at \a sensor_pose.
@@ -88,7 +92,11 @@ namespace pcl
         */
       RenderedView render (const Eigen::Affine3d& sensor_pose) const;
 
-      /** \brief The ray of pixel (\a col, \a row) in the sensor frame, through the pixel centre. */
+      /** \brief The ray of pixel (\a col, \a row) in the sensor frame, through the pixel centre.
+        * \param[in] col column, 0 at the left of the image
+        * \param[in] row row, 0 at the top of the image
+        * \return the ray; its hit point origin + t * direction is what render() stores in that cell
+        */
       PixelRay pixelRay (int col, int row) const;
 
     private:
@@ -105,6 +113,8 @@ namespace pcl
   };
 
   /** \brief Möller–Trumbore intersection of the ray origin + t * direction with a triangle, in double.
+    * \param[in] origin, direction the ray
+    * \param[in] a, b, c the triangle's corners
     * \param[out] t the ray parameter of the hit
     * \return true when the ray hits the triangle (edges included) at t > 0
     * \ingroup simulation
