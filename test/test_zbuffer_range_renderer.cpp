@@ -11,6 +11,8 @@
 #include <pcl/simulation/view_set.h>
 #include <pcl/simulation/zbuffer_range_renderer.h>
 
+#include <iostream>
+#include <limits>
 #include <map>
 
 namespace
@@ -134,6 +136,8 @@ namespace
     pcl::PointMeshDistance distance;
     distance.setMesh (mesh);
     const double object_size = 2.0 * target.radius;
+    double overall = 0.0;
+    std::size_t total = 0;
     for (std::size_t i = 0; i < poses.size (); ++i)
     {
       const auto view = renderer.render (poses[i]);
@@ -141,7 +145,11 @@ namespace
       const double worst = maxDistanceToMesh (view, distance, finite);
       EXPECT_GT (finite, static_cast<std::size_t> (size * size / 20)) << "view " << i;
       EXPECT_LE (worst, 1e-6 * object_size) << "view " << i << ": " << finite << " points";
+      overall = std::max (overall, worst);
+      total += finite;
     }
+    std::cout << "[   INFO   ] " << poses.size () << " views, " << total << " points: max distance to the mesh "
+              << overall << " m = " << overall / object_size << " of the object size" << std::endl;
   }
 }
 
@@ -202,6 +210,8 @@ TEST (ZBufferRangeRenderer, SphereMatchesAnalyticRange)
   EXPECT_EQ (missed, 0);
   EXPECT_GT (checked, 3000);
   EXPECT_LE (worst, 1e-5 * r);
+  std::cout << "[   INFO   ] " << checked << " rays: max range error " << worst / r << " R (chord sag bound "
+            << sag / 0.6 / r << " R)" << std::endl;
 }
 
 // Every rendered point of the sphere, silhouette included, lies between the sphere and the chord sag.
@@ -305,6 +315,9 @@ TEST (ZBufferRangeRenderer, RejectsBadInput)
   pcl::ScanMesh bad;
   addSquare (bad, 1.0, 0.0);
   bad.polygons[0].vertices[2] = 99;
+  EXPECT_THROW (renderer.setMesh (bad), pcl::InvalidScanException);
+  bad.polygons[0].vertices[2] = 2;
+  (*bad.cloud)[1].x = std::numeric_limits<float>::quiet_NaN ();
   EXPECT_THROW (renderer.setMesh (bad), pcl::InvalidScanException);
 }
 

@@ -67,6 +67,10 @@ namespace pcl
           PCL_TENSOR_THROW (InvalidScanException, "ZBufferRangeRenderer: vertex index "
                             << poly.vertices[k] << " out of range (" << pts.size () << " vertices)");
         v[k] = pts[poly.vertices[k]].getVector3fMap ().cast<double> ();
+        // A NaN corner would turn the triangle's pixel bounds into undefined integer casts.
+        if (!v[k].allFinite ())
+          PCL_TENSOR_THROW (InvalidScanException, "ZBufferRangeRenderer: vertex " << poly.vertices[k]
+                            << " of a triangle is not finite");
       }
       triangles.push_back ({v[0], v[1], v[2]});
     }

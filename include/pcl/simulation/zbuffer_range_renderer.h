@@ -72,7 +72,9 @@ namespace pcl
       using ConstPtr = shared_ptr<const ZBufferRangeRenderer>;
 
       /** \brief Set the mesh to render (its vertices and triangles; normals are ignored).
-        * \throw InvalidScanException when it has no triangles or a triangle indexes a missing vertex
+        * \param[in] mesh the model; its triangles are copied in double precision
+        * \throw InvalidScanException when it has no triangles, or a triangle indexes a missing or
+        * non-finite vertex
         */
       void setMesh (const ScanMesh& mesh);
 
