@@ -151,7 +151,12 @@ main (int argc, char** argv)
   }
   catch (const pcl::PCLException& e)
   {
-    std::cerr << argv[0] << ": error: " << e.what () << std::endl;
+    std::cerr << "pcl_tensor_views: error: " << pcl::errorDescription (e) << std::endl;
     return kUsageError;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "pcl_tensor_views: internal error: " << e.what () << std::endl;
+    return 1;
   }
 }
