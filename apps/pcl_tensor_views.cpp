@@ -53,6 +53,38 @@ namespace
     pcl::SyntheticViewParams params;
   };
 
+  /** A strictly parsed integer: pcl::console would read "abc" as 0 without complaint. */
+  int
+  toInt (const std::string& text, const char* option)
+  {
+    std::size_t used = 0;
+    int value = 0;
+    try
+    {
+      value = std::stoi (text, &used);
+    }
+    catch (const std::exception&)
+    {
+      used = 0;
+    }
+    if (used == 0 || used != text.size ())
+      PCL_TENSOR_THROW (pcl::BadArgumentException, option << " expects integers, got '" << text << "'");
+    return value;
+  }
+
+  /** "--size W H" as two separate arguments (pcl::console::parse_2x_arguments wants "W,H"). */
+  void
+  parseSize (int argc, char** argv, int& width, int& height)
+  {
+    const int at = find_argument (argc, argv, "--size");
+    if (at < 0)
+      return;
+    if (at + 2 >= argc)
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "--size needs two values: W H");
+    width = toInt (argv[at + 1], "--size");
+    height = toInt (argv[at + 2], "--size");
+  }
+
   Options
   parseOptions (int argc, char** argv)
   {
@@ -71,7 +103,7 @@ namespace
     o.step = o.ring > 0 ? 360.0 / o.ring : 0.0;
     parse_argument (argc, argv, "--step", o.step);
     parse_argument (argc, argv, "--noise", o.params.noise_sigma_resolutions);
-    parse_2x_arguments (argc, argv, "--size", o.params.camera.width, o.params.camera.height);
+    parseSize (argc, argv, o.params.camera.width, o.params.camera.height);
     parse_argument (argc, argv, "--fov", o.params.camera.fov_deg);
     parse_argument (argc, argv, "--seed", o.params.seed);
     o.params.camera.orthographic = find_switch (argc, argv, "--ortho");

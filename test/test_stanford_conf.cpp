@@ -12,6 +12,7 @@
 #include <pcl/surface/range_scan_triangulation.h>
 
 #include <algorithm>
+#include <iostream>
 
 #include <cstdio>
 #include <fstream>
@@ -148,6 +149,8 @@ TEST (StanfordConf, BunConfAlignsTheScansWithTheReconstruction)
     const double d_res = pcl::meshResolution (mesh);
     const double median = medianDistance (*scan.cloud, e.pose (), tree);
     EXPECT_LE (median, 1.5 * d_res) << e.file << ": median " << median << " m, d_res " << d_res << " m";
+    std::cout << "[   INFO   ] " << e.file << ": median " << median / d_res << " d_res (d_res " << d_res << " m)"
+              << std::endl;
     Eigen::Affine3d transposed = e.pose ();
     transposed.linear () = e.quaternion.normalized ().toRotationMatrix ();
     wrong_convention_fails += medianDistance (*scan.cloud, transposed, tree) > 1.5 * d_res ? 1 : 0;

@@ -7,7 +7,12 @@
 #include <pcl/common/point_tests.h>
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/simulation/example_object.h>
+#include <pcl/io/range_grid_ply.h>
+#include <pcl/io/range_scan_io.h>
+#include <pcl/io/stanford_conf.h>
 #include <pcl/simulation/synthetic_views.h>
+
+#include <cstdio>
 
 namespace
 {
@@ -103,4 +108,36 @@ TEST (SyntheticViews, SameSeedSameViews)
     }
   params.noise_sigma_resolutions = -1.0;
   EXPECT_THROW (pcl::renderSyntheticViews (model, d, params), pcl::BadArgumentException);
+}
+
+// End to end, as the app does it: range_grid PLY files plus a .conf, read back with the project's
+// loaders, put every point back on the model (this checks the R(q)^T convention of the written poses).
+TEST (SyntheticViews, FilesAndConfReproduceTheGroundTruth)
+{
+  const auto model = smallObject ();
+  const auto views = pcl::renderSyntheticViews (model, pcl::makeDefaultViewDirections (), smallCamera ());
+  std::vector<pcl::io::StanfordConfEntry> entries;
+  const std::string dir = ::testing::TempDir ();
+  for (std::size_t i = 0; i < views.size (); i += 5)
+  {
+    const std::string name = "synthetic_view_" + std::to_string (i) + ".ply";
+    pcl::io::saveRangeGridPLY (dir + name, *views[i].view.cloud);
+    entries.push_back (pcl::io::StanfordConfEntry::fromPose (name, views[i].view.pose));
+  }
+  pcl::io::saveStanfordConf (dir + "synthetic_views.conf", entries);
+  pcl::PointMeshDistance distance;
+  distance.setMesh (model);
+  const double size = 2.0 * pcl::boundingTarget (model).radius;
+  for (const auto& e : pcl::io::loadStanfordConf (dir + "synthetic_views.conf"))
+  {
+    const auto scan = pcl::io::loadRangeScan (dir + e.file);
+    double worst = 0.0;
+    for (const auto& p : *scan.cloud)
+      if (pcl::isXYZFinite (p))
+        worst = std::max (worst, distance.distance (e.pose () * p.getVector3fMap ().cast<double> ()));
+    EXPECT_LE (worst, 1e-6 * size) << e.file;
+    EXPECT_GT (scan.finite_points, 1000u);
+    std::remove ((dir + e.file).c_str ());
+  }
+  std::remove ((dir + "synthetic_views.conf").c_str ());
 }
