@@ -116,42 +116,43 @@ namespace pcl
   void
   TensorSurfaceGrid::split (const Polygon& in, int axis, double plane, Polygon& below, Polygon& above)
   {
+    // One Sutherland-Hodgman step against the plane u_axis = plane, keeping both sides. The inputs are
+    // convex (a triangle cut by at most six axis-aligned planes), so each side has at most 9 vertices.
     below.n = 0;
     above.n = 0;
-    for (int i = 0; i < in.n; ++i)
+    const int n = in.n;
+    // Rounding could make a nearly degenerate polygon cross the plane more than twice; never write
+    // past the buffers (such a sliver has no measurable area).
+    constexpr int last = Polygon::capacity - 2;
+    const double* prev = in.p[n - 1];
+    double dp = prev[axis] - plane;
+    for (int i = 0; i < n; ++i)
     {
       const double* cur = in.p[i];
-      const double* nxt = in.p[(i + 1) % in.n];
       const double dc = cur[axis] - plane;
-      const double dn = nxt[axis] - plane;
-      if (dc <= 0.0 && below.n < Polygon::capacity)
+      if (below.n > last || above.n > last)
+        break;
+      if ((dp < 0.0 && dc > 0.0) || (dp > 0.0 && dc < 0.0))
       {
-        std::copy (cur, cur + 3, below.p[below.n]);
-        ++below.n;
-      }
-      if (dc >= 0.0 && above.n < Polygon::capacity)
-      {
-        std::copy (cur, cur + 3, above.p[above.n]);
-        ++above.n;
-      }
-      if ((dc < 0.0 && dn > 0.0) || (dc > 0.0 && dn < 0.0))
-      {
-        const double t = dc / (dc - dn);
-        double q[3];
+        const double t = dp / (dp - dc);
+        double* qb = below.p[below.n++];
+        double* qa = above.p[above.n++];
         for (int k = 0; k < 3; ++k)
-          q[k] = cur[k] + t * (nxt[k] - cur[k]);
-        q[axis] = plane;
-        if (below.n < Polygon::capacity)
-        {
-          std::copy (q, q + 3, below.p[below.n]);
-          ++below.n;
-        }
-        if (above.n < Polygon::capacity)
-        {
-          std::copy (q, q + 3, above.p[above.n]);
-          ++above.n;
-        }
+          qb[k] = qa[k] = prev[k] + t * (cur[k] - prev[k]);
+        qb[axis] = qa[axis] = plane;
       }
+      if (dc <= 0.0)
+      {
+        double* q = below.p[below.n++];
+        q[0] = cur[0]; q[1] = cur[1]; q[2] = cur[2];
+      }
+      if (dc >= 0.0)
+      {
+        double* q = above.p[above.n++];
+        q[0] = cur[0]; q[1] = cur[1]; q[2] = cur[2];
+      }
+      prev = cur;
+      dp = dc;
     }
   }
 
@@ -198,32 +199,35 @@ namespace pcl
     i0 = std::max (i0, 0);
     i1 = std::min (i1, n - 1);
 
-    Polygon rem = poly, below, above;
+    // Cut the polygon slab by slab; the remainder alternates between two buffers (no copies).
+    Polygon buffers[2], below;
+    int next = 0;
+    const Polygon* rem = &poly;
     const double lower_plane = (i0 - half_bins) * bin_size_;
     if (lo < lower_plane)
     {
-      split (rem, axis, lower_plane, below, above);
-      rem = above;
+      split (*rem, axis, lower_plane, below, buffers[next]);
+      rem = &buffers[next];
+      next ^= 1;
     }
     for (int i = i0; i <= i1; ++i)
     {
       const double plane = (i + 1 - half_bins) * bin_size_;
-      const Polygon* piece = &rem;
-      bool last = (i == i1);
-      if (hi > plane)
+      const Polygon* piece = rem;
+      const bool cut = hi > plane;
+      if (cut)
       {
-        split (rem, axis, plane, below, above);
+        split (*rem, axis, plane, below, buffers[next]);
         piece = &below;
       }
-      else
-        last = true;
       if (axis < 2)
         sweep (*piece, axis + 1, flat_prefix * n + i);
       else
         addArea (*piece, flat_prefix * n + i);
-      if (last)
+      if (!cut || i == i1)
         break;
-      rem = above;
+      rem = &buffers[next];
+      next ^= 1;
     }
   }
 

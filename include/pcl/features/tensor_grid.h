@@ -96,7 +96,7 @@ namespace pcl
     private:
       struct Polygon
       {
-        static constexpr int capacity = 16;
+        static constexpr int capacity = 12;  // a triangle cut by six axis-aligned planes has at most 9 vertices
         double p[capacity][3];
         int n = 0;
       };
