@@ -50,3 +50,20 @@ namespace pcl_tensor_test
   const std::string var = pcl_tensor_test::sharedDataPath (relative);                      \
   if (var.empty ())                                                                         \
     GTEST_SKIP () << "SKIPPED: ../shared/data/" << (relative) << " is absent (third-party data)"
+
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <vector>
+
+namespace pcl_tensor_test
+{
+  /** \brief The ten raw Stanford bunny scans, relative to ../shared/data. */
+  const std::vector<std::string>& bunnyScanNames ();
+
+  /** \brief An organized height field z = f(x, y) of rows x cols samples on a pitch, with smooth random
+    * bumps and NaN holes, seeded: a synthetic range image of known geometry for stress tests.
+    */
+  pcl::PointCloud<pcl::PointXYZ>
+  makeHeightField (std::uint32_t seed, int rows, int cols, double pitch, double hole_fraction);
+}

@@ -11,49 +11,52 @@
 
 namespace pcl
 {
-  namespace
-  {
-    /** Calls f(point) for every finite point of every cloud. */
-    template <typename PointT, typename F> void
-    forEachFinite (const std::vector<const pcl::PointCloud<PointT>*>& clouds, F&& f)
-    {
-      for (const auto* cloud : clouds)
-        for (const auto& p : *cloud)
-          if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
-            f (p.getVector3fMap ().template cast<double> ().eval ());
-    }
-  }
-
-  template <typename PointT> Eigen::Vector3d
-  principalExtents (const std::vector<const pcl::PointCloud<PointT>*>& clouds)
+  Eigen::Vector3d
+  principalExtents (const std::vector<Eigen::Vector3d>& points)
   {
     // Two passes in double precision: centroid first, so that the covariance does not lose digits
     // to large coordinates (scans far from the origin).
     std::size_t n = 0;
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero ();
-    forEachFinite (clouds, [&] (const Eigen::Vector3d& p) { centroid += p; ++n; });
+    for (const auto& p : points)
+      if (p.allFinite ())
+      {
+        centroid += p;
+        ++n;
+      }
     if (n < 3)
       PCL_TENSOR_THROW (InvalidScanException, "principal axes need at least 3 finite points, got " << n);
     centroid /= static_cast<double> (n);
 
     Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero ();
-    forEachFinite (clouds, [&] (const Eigen::Vector3d& p) {
-      const Eigen::Vector3d d = p - centroid;
-      covariance.noalias () += d * d.transpose ();
-    });
+    for (const auto& p : points)
+      if (p.allFinite ())
+        covariance.noalias () += (p - centroid) * (p - centroid).transpose ();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (covariance);
     const Eigen::Matrix3d axes = solver.eigenvectors (); // P_i in Eq. 1
 
     Eigen::Vector3d lo = Eigen::Vector3d::Constant (std::numeric_limits<double>::max ());
     Eigen::Vector3d hi = -lo;
-    forEachFinite (clouds, [&] (const Eigen::Vector3d& p) {
-      const Eigen::Vector3d q = axes.transpose () * (p - centroid);
-      lo = lo.cwiseMin (q);
-      hi = hi.cwiseMax (q);
-    });
+    for (const auto& p : points)
+      if (p.allFinite ())
+      {
+        const Eigen::Vector3d q = axes.transpose () * (p - centroid);
+        lo = lo.cwiseMin (q);
+        hi = hi.cwiseMax (q);
+      }
     Eigen::Vector3d extents = hi - lo;
     std::sort (extents.data (), extents.data () + 3, std::greater<> ());
     return extents;
+  }
+
+  template <typename PointT> Eigen::Vector3d
+  principalExtents (const std::vector<const pcl::PointCloud<PointT>*>& clouds)
+  {
+    std::vector<Eigen::Vector3d> points;
+    for (const auto* cloud : clouds)
+      for (const auto& p : *cloud)
+        points.push_back (p.getVector3fMap ().template cast<double> ());
+    return principalExtents (points);
   }
 
   template <typename PointT> Eigen::Vector3d

@@ -35,9 +35,14 @@ namespace pcl
   };
 
   /** \brief Extents of a point set after aligning it with its principal axes (Eq. 1 for one view, Eq. 9
-    * for registered views), sorted from largest to smallest. Non-finite points are skipped.
+    * for registered views), sorted from largest to smallest, computed in double precision.
+    * Non-finite points are skipped.
     * \throw InvalidScanException when fewer than three finite points remain.
     */
+  Eigen::Vector3d
+  principalExtents (const std::vector<Eigen::Vector3d>& points);
+
+  /** \brief principalExtents() of a cloud's finite points. */
   template <typename PointT> Eigen::Vector3d
   principalExtents (const pcl::PointCloud<PointT>& cloud);
 

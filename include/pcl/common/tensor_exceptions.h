@@ -6,6 +6,9 @@
 
 #include <pcl/exceptions.h>
 
+#include <sstream>
+#include <string>
+
 namespace pcl
 {
   /** \brief Thrown when a range scan or mesh cannot be used: empty, all NaN, fewer than three points,
@@ -25,6 +28,16 @@ namespace pcl
         : PCLException (error_description, file_name, function_name, line_number)
       {}
   };
+
+  /** \brief The description of an exception without the ": " that pcl::PCLException puts before it
+    * when no file name is given; for one-line messages in the apps.
+    */
+  inline std::string
+  errorDescription (const std::exception& e)
+  {
+    std::string message = e.what ();
+    return message.rfind (": ", 0) == 0 ? message.substr (2) : message;
+  }
 }
 
 /** \brief Throw \a ExceptionName with a streamed message, recording where it was thrown. */

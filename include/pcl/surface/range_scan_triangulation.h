@@ -13,18 +13,26 @@ namespace pcl
     *
     * Organized clouds are triangulated over their grid (the grid is the retinal plane); unorganized
     * clouds by a 2D Delaunay triangulation (VTK's vtkDelaunay2D) of the points projected onto the
-    * sensor's retinal plane. Triangles with an edge longer than mean + k standard deviations of the
-    * edge lengths are then removed (k = 0.6 in the paper), which separates surfaces that the
-    * triangulation falsely connected. Vertices that no longer belong to any triangle are kept, so
+    * sensor's retinal plane. Triangles with an edge longer than mean + k standard deviations are
+    * then removed (k = 0.6 in the paper), which separates surfaces that the triangulation falsely
+    * connected. The statistics are taken over each triangle's longest edge: over all edges, the
+    * rule would remove every triangle of a regular grid, whose diagonals are sqrt(2) times longer.
+    * A triangle whose longest edge is under a floor of 2 median lengths is always kept: where the
+    * lengths barely vary (a tilted plane, a synthetic render) the standard deviation is rounding
+    * noise, and mean + 0.6 stddev alone would cut a quarter of a smooth surface away. Vertices that no longer belong to any triangle are kept, so
     * that the mesh has one vertex per finite input point.
     * \ingroup surface
     */
   class RangeScanTriangulation
   {
     public:
-      /** \brief Set k in the pruning threshold mean + k * stddev of the edge lengths (default 0.6). */
+      /** \brief Set k in the pruning threshold mean + k * stddev of the triangles' longest edges (default 0.6). */
       void setEdgeStdDevs (double k);
       double getEdgeStdDevs () const { return edge_std_devs_; }
+
+      /** \brief Never prune a triangle whose longest edge is under this many median lengths (default 2). */
+      void setEdgeFloorMedians (double floor);
+      double getEdgeFloorMedians () const { return edge_floor_medians_; }
 
       /** \brief Set the sensor; it defines the retinal plane for unorganized clouds. */
       void setViewpoint (const ScanViewpoint& viewpoint) { viewpoint_ = viewpoint; }
@@ -42,6 +50,7 @@ namespace pcl
 
     private:
       double edge_std_devs_{0.6};
+      double edge_floor_medians_{2.0};
       bool force_delaunay_{false};
       ScanViewpoint viewpoint_ = ScanViewpoint::fromPositiveZ ();
   };

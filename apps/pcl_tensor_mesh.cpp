@@ -1,0 +1,132 @@
+/*
+ * pcl_tensor_mesh: range image -> fine mesh M_i -> reduced mesh M'_i with vertex normals (Section 2).
+ */
+#include <pcl/common/tensor_exceptions.h>
+#include <pcl/console/parse.h>
+#include <pcl/console/print.h>
+#include <pcl/console/time.h>
+#include <pcl/io/ply_io.h>
+#include <pcl/io/range_scan_io.h>
+#include <pcl/surface/scan_preparation.h>
+
+#include <iostream>
+
+using namespace pcl::console;
+
+namespace
+{
+  constexpr int kExitBadInput = 2;
+
+  void
+  printHelp (const char* name)
+  {
+    const pcl::ScanPreparationParams d;
+    print_info ("Turn a range image into the reduced mesh M'_i of Mian et al. (2006), Section 2.\n\n");
+    print_info ("Usage: %s SCAN.{ply,pcd} -o REDUCED.ply [options]\n", name);
+    print_info ("  -o FILE              reduced mesh with normals (PLY)\n");
+    print_info ("  --fine FILE          also write the fine mesh M_i (PLY)\n");
+    print_info ("  --faces N            faces of M'_i (default "); print_value ("%d", d.target_faces); print_info (")\n");
+    print_info ("  --edge-std K         prune triangles with an edge over mean + K stddev (default "); print_value ("%g", d.edge_std_devs); print_info (")\n");
+    print_info ("  --normals fine|face  normal approach (b) or (a) of Section 2 (default "); print_value ("fine"); print_info (")\n");
+    print_info ("  --normal-radius R    radius of approach (b), in d_res (default "); print_value ("%g", d.normal_radius_resolutions); print_info (")\n");
+    print_info ("  --viewpoint x,y,z    perspective sensor position (default: the file's pose; +z for PLY)\n");
+    print_info ("Exit codes: 0 done, 2 bad input or usage.\n");
+  }
+
+  /** Throws pcl::BadArgumentException so that usage errors take the same one-line path as bad data. */
+  pcl::ScanPreparationParams
+  parseParams (int argc, char** argv)
+  {
+    pcl::ScanPreparationParams params;
+    parse_argument (argc, argv, "--faces", params.target_faces);
+    parse_argument (argc, argv, "--edge-std", params.edge_std_devs);
+    parse_argument (argc, argv, "--normal-radius", params.normal_radius_resolutions);
+    std::string normals = "fine";
+    parse_argument (argc, argv, "--normals", normals);
+    if (normals == "face")
+      params.normal_method = pcl::ScanMeshNormalEstimation::Method::FACE_AVERAGE;
+    else if (normals != "fine")
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "--normals must be 'fine' or 'face', got '" << normals << "'");
+    return params;
+  }
+
+  void
+  savePly (const std::string& path, const pcl::ScanMesh& mesh)
+  {
+    pcl::PolygonMesh out;
+    pcl::toPolygonMesh (mesh, out);
+    if (pcl::io::savePLYFileBinary (path, out) < 0)
+      PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << path << "'");
+  }
+
+  int
+  run (int argc, char** argv)
+  {
+    const std::vector<int> inputs = parse_file_extension_argument (argc, argv, ".ply");
+    const std::vector<int> pcds = parse_file_extension_argument (argc, argv, ".pcd");
+    std::string output, fine_output;
+    parse_argument (argc, argv, "-o", output);
+    parse_argument (argc, argv, "--fine", fine_output);
+    std::vector<int> scan_args;
+    for (int i : inputs)
+      if (argv[i] != output && argv[i] != fine_output)
+        scan_args.push_back (i);
+    scan_args.insert (scan_args.end (), pcds.begin (), pcds.end ());
+    if (scan_args.size () != 1 || output.empty ())
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "expected one SCAN.{ply,pcd} and -o REDUCED.ply (see --help)");
+    const pcl::ScanPreparationParams params = parseParams (argc, argv);
+
+    TicToc timer;
+    timer.tic ();
+    pcl::io::RangeScan scan = pcl::io::loadRangeScan (argv[scan_args[0]]);
+    print_info ("Loaded "); print_value ("%zu", scan.finite_points); print_info (" points in "); print_value ("%g", timer.toc ()); print_info (" ms\n");
+    std::vector<double> viewpoint;
+    if (parse_x_arguments (argc, argv, "--viewpoint", viewpoint) > 0)
+    {
+      if (viewpoint.size () != 3)
+        PCL_TENSOR_THROW (pcl::BadArgumentException, "--viewpoint takes x,y,z");
+      Eigen::Vector4f centroid = Eigen::Vector4f::Zero ();
+      std::size_t n = 0;
+      for (const auto& p : *scan.cloud)
+        if (std::isfinite (p.x))
+        {
+          centroid += p.getVector4fMap ();
+          ++n;
+        }
+      scan.viewpoint = pcl::ScanViewpoint::lookingAt (Eigen::Vector3d (viewpoint[0], viewpoint[1], viewpoint[2]),
+                                                      (centroid.head<3> () / static_cast<float> (n)).cast<double> ());
+    }
+
+    timer.tic ();
+    const pcl::PreparedScan prepared = pcl::prepareScan (*scan.cloud, scan.viewpoint, params);
+    print_info ("Meshed "); print_value ("%zu", prepared.fine.polygons.size ()); print_info (" faces (d_res ");
+    print_value ("%g", prepared.resolution); print_info (") and reduced to "); print_value ("%zu", prepared.reduced.polygons.size ());
+    print_info (" faces in "); print_value ("%g", timer.toc ()); print_info (" ms\n");
+
+    timer.tic ();
+    savePly (output, prepared.reduced);
+    if (!fine_output.empty ())
+      savePly (fine_output, prepared.fine);
+    print_info ("Saved in "); print_value ("%g", timer.toc ()); print_info (" ms\n");
+    return 0;
+  }
+}
+
+int
+main (int argc, char** argv)
+{
+  if (argc < 2 || find_switch (argc, argv, "-h") || find_switch (argc, argv, "--help"))
+  {
+    printHelp (argv[0]);
+    return argc < 2 ? kExitBadInput : 0;
+  }
+  try
+  {
+    return run (argc, argv);
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "pcl_tensor_mesh: error: " << pcl::errorDescription (e) << std::endl;
+    return kExitBadInput;
+  }
+}

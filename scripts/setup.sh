@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Installs exactly what pcl_tensor needs on Debian 12 (bookworm). Run as root (or with sudo).
+set -euo pipefail
+export DEBIAN_FRONTEND=noninteractive
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends \
+  ca-certificates cmake g++ make \
+  libpcl-dev libmeshoptimizer-dev \
+  libgtest-dev googletest libbenchmark-dev > /dev/null
+echo "pcl_tensor: build dependencies installed"

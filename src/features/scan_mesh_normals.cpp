@@ -1,0 +1,99 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#include <pcl/features/scan_mesh_normals.h>
+#include <pcl/common/tensor_exceptions.h>
+#include <pcl/kdtree/kdtree_flann.h>
+
+namespace pcl
+{
+  namespace
+  {
+    /** Per vertex, the sum of the cross products of its faces: twice the area-weighted normal. */
+    std::vector<Eigen::Vector3d>
+    areaWeightedSums (const ScanMesh& mesh)
+    {
+      std::vector<Eigen::Vector3d> sums (mesh.cloud->size (), Eigen::Vector3d::Zero ());
+      for (const auto& poly : mesh.polygons)
+      {
+        const auto& v = poly.vertices;
+        const Eigen::Vector3d a = (*mesh.cloud)[v[0]].getVector3fMap ().cast<double> ();
+        const Eigen::Vector3d b = (*mesh.cloud)[v[1]].getVector3fMap ().cast<double> ();
+        const Eigen::Vector3d c = (*mesh.cloud)[v[2]].getVector3fMap ().cast<double> ();
+        const Eigen::Vector3d n = (b - a).cross (c - a);
+        for (const auto i : v)
+          sums[i] += n;
+      }
+      return sums;
+    }
+
+    /** Normalise and flip toward the sensor; a vertex without faces gets the line of sight. */
+    void
+    storeOriented (ScanMesh& mesh, const std::vector<Eigen::Vector3d>& sums)
+    {
+      for (std::size_t i = 0; i < sums.size (); ++i)
+      {
+        auto& p = (*mesh.cloud)[i];
+        const Eigen::Vector3d toward = mesh.viewpoint.towardSensor (p.getVector3fMap ().cast<double> ());
+        Eigen::Vector3d n = sums[i].norm () > 0.0 ? sums[i].normalized () : toward;
+        if (n.dot (toward) < 0.0)
+          n = -n;
+        p.getNormalVector3fMap () = n.cast<float> ();
+      }
+    }
+
+    void
+    requireFaces (const ScanMesh& mesh, const char* which)
+    {
+      if (mesh.polygons.empty ())
+        PCL_TENSOR_THROW (InvalidScanException, "vertex normals need faces; the " << which << " mesh has none");
+    }
+  }
+
+  void
+  ScanMeshNormalEstimation::setRadiusResolutions (double radius)
+  {
+    if (!(radius > 0.0) || !std::isfinite (radius))
+      PCL_TENSOR_THROW (BadArgumentException, "normal neighbourhood radius must be positive, got " << radius);
+    radius_resolutions_ = radius;
+  }
+
+  void
+  ScanMeshNormalEstimation::computeFaceAverage (ScanMesh& mesh) const
+  {
+    requireFaces (mesh, "input");
+    storeOriented (mesh, areaWeightedSums (mesh));
+  }
+
+  void
+  ScanMeshNormalEstimation::compute (ScanMesh& reduced, ScanMesh& fine) const
+  {
+    requireFaces (reduced, "reduced");
+    if (method_ == Method::FACE_AVERAGE)
+    {
+      computeFaceAverage (reduced);
+      return;
+    }
+    requireFaces (fine, "fine");
+    const std::vector<Eigen::Vector3d> fine_sums = areaWeightedSums (fine);
+    storeOriented (fine, fine_sums);
+
+    pcl::KdTreeFLANN<pcl::PointNormal> tree;
+    tree.setInputCloud (fine.cloud);
+    const double radius = radius_resolutions_ * meshResolution (fine);
+    pcl::Indices nearest (1), neighbours;
+    std::vector<float> d2 (1), neighbour_d2;
+    std::vector<Eigen::Vector3d> sums (reduced.cloud->size (), Eigen::Vector3d::Zero ());
+    for (std::size_t i = 0; i < reduced.cloud->size (); ++i)
+    {
+      // The corresponding vertex of M_i is the nearest one; its normal is the area-weighted
+      // average over the fine faces within the neighbourhood (Section 2, second approach).
+      if (tree.nearestKSearch ((*reduced.cloud)[i], 1, nearest, d2) < 1)
+        continue;
+      tree.radiusSearch ((*fine.cloud)[nearest[0]], radius, neighbours, neighbour_d2);
+      for (const auto j : neighbours)
+        sums[i] += fine_sums[j];
+    }
+    storeOriented (reduced, sums);
+  }
+}

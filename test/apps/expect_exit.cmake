@@ -1,0 +1,18 @@
+# Runs COMMAND (a ;-list) and checks that it exits with EXPECTED_EXIT. A failing run must say why
+# in exactly one line on stderr, as the apps promise.
+#   cmake -DCOMMAND="app;arg1;arg2" -DEXPECTED_EXIT=2 -P expect_exit.cmake
+execute_process(COMMAND ${COMMAND} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 300)
+if(NOT "${code}" STREQUAL "${EXPECTED_EXIT}")
+  message(FATAL_ERROR "exit code ${code}, expected ${EXPECTED_EXIT}\nstdout:\n${out}\nstderr:\n${err}")
+endif()
+if(NOT EXPECTED_EXIT EQUAL 0)
+  string(STRIP "${err}" err)
+  string(REGEX MATCHALL "\n" newlines "${err}")
+  list(LENGTH newlines extra_lines)
+  if(err STREQUAL "" OR extra_lines GREATER 0)
+    message(FATAL_ERROR "expected one line on stderr, got:\n${err}")
+  endif()
+endif()
+if(EXPECTED_FILE AND NOT EXISTS "${EXPECTED_FILE}")
+  message(FATAL_ERROR "expected output file ${EXPECTED_FILE} was not written")
+endif()
