@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace pcl
@@ -70,21 +71,66 @@ namespace pcl
       for (const int v : faces_[f])
         vertex_faces_[fill[v]++] = static_cast<int> (f);
 
-    pcl::PointCloud<pcl::PointXYZ>::Ptr seeds (new pcl::PointCloud<pcl::PointXYZ>);
-    seed_tree_vertices_.clear ();
+    // Connected components over shared vertices (union-find), and each one's longest edge.
+    std::vector<int> parent (n);
+    for (int i = 0; i < n; ++i)
+      parent[i] = i;
+    auto root = [&parent] (int x)
+    {
+      while (parent[x] != x)
+        x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    for (const auto& t : faces_)
+    {
+      parent[root (t[0])] = root (t[1]);
+      parent[root (t[1])] = root (t[2]);
+    }
+    std::vector<int> component_of_root (n, -1);
+    std::vector<int> vertex_component (n, -1);
+    int components = 0;
     for (int i = 0; i < n; ++i)
       if (vertex_face_offsets_[i + 1] > vertex_face_offsets_[i])
       {
-        seeds->push_back (pcl::PointXYZ (static_cast<float> (vertices_[i].x ()), static_cast<float> (vertices_[i].y ()),
-                                         static_cast<float> (vertices_[i].z ())));
-        seed_tree_vertices_.push_back (i);
+        const int r = root (i);
+        if (component_of_root[r] < 0)
+          component_of_root[r] = components++;
+        vertex_component[i] = component_of_root[r];
       }
-    seed_tree_.setInputCloud (seeds);
+    component_reach_.assign (components, 0.0);
+    for (const auto& t : faces_)
+    {
+      const int c = vertex_component[t[0]];
+      for (int k = 0; k < 3; ++k)
+        component_reach_[c] = std::max (component_reach_[c], (vertices_[t[k]] - vertices_[t[(k + 1) % 3]]).norm ());
+    }
+    component_offsets_.assign (components + 1, 0);
+    for (int i = 0; i < n; ++i)
+      if (vertex_component[i] >= 0)
+        ++component_offsets_[vertex_component[i] + 1];
+    for (int c = 0; c < components; ++c)
+      component_offsets_[c + 1] += component_offsets_[c];
+    face_vertices_.assign (component_offsets_[components], -1);
+    {
+      std::vector<int> fill_c (component_offsets_.begin (), component_offsets_.end () - 1);
+      for (int i = 0; i < n; ++i)
+        if (vertex_component[i] >= 0)
+          face_vertices_[fill_c[vertex_component[i]]++] = i;
+    }
 
     local_.assign (n, Eigen::Vector3d::Zero ());
     local_stamp_.assign (n, 0);
     face_stamp_.assign (nf, 0);
     stamp_ = 0;
+  }
+
+  void
+  TensorSurfaceGrid::setGrowthMargin (double fraction)
+  {
+    if (!(fraction >= 0.0) || !std::isfinite (fraction))
+      PCL_TENSOR_THROW (BadArgumentException, "[pcl::TensorSurfaceGrid::setGrowthMargin] " << fraction
+                        << " must be non-negative and finite");
+    growth_margin_fraction_ = fraction;
   }
 
   void
@@ -231,7 +277,7 @@ namespace pcl
     }
   }
 
-  void
+  bool
   TensorSurfaceGrid::visitFace (int face)
   {
     ++stats_.faces_visited;
@@ -241,12 +287,15 @@ namespace pcl
     const Eigen::Vector3d& c = localVertex (t[2]);
     const Eigen::Vector3d lo = a.cwiseMin (b).cwiseMin (c);
     const Eigen::Vector3d hi = a.cwiseMax (b).cwiseMax (c);
+    const double g = half_extent_ + growth_margin_;
+    if ((hi.array () <= -g).any () || (lo.array () >= g).any ())
+      return false;  // outside the grid and its guard band: the region stops here
     const double h = half_extent_;
     if ((hi.array () <= -h).any () || (lo.array () >= h).any ())
-      return;
+      return true;   // in the guard band: grow through it, nothing to clip
     ++stats_.faces_clipped;
     if (face_normals_[face].isZero ())
-      return;  // degenerate triangle: no area, but it still connects the region
+      return true;  // degenerate triangle: no area, but it still connects the region
     current_normal_ = frame_ * face_normals_[face];
     Polygon poly;
     poly.n = 3;
@@ -257,6 +306,7 @@ namespace pcl
       poly.p[2][k] = c[k];
     }
     sweep (poly, 0, 0);
+    return true;
   }
 
   void
@@ -270,6 +320,7 @@ namespace pcl
     origin_ = origin;
     frame_ = frame;
     half_extent_ = 0.5 * grid_size_ * bin_size_;
+    growth_margin_ = region_growing_ ? growth_margin_fraction_ * half_extent_ : 0.0;
     stats_ = Stats ();
     if (++stamp_ == 0)
     {
@@ -293,13 +344,37 @@ namespace pcl
           }
         }
       };
-      // Seed: the vertex closest to the origin (Section 2), and the two pair vertices.
-      pcl::Indices nn (1);
-      std::vector<float> nn_dist (1);
-      const pcl::PointXYZ o (static_cast<float> (origin.x ()), static_cast<float> (origin.y ()),
-                             static_cast<float> (origin.z ()));
-      if (seed_tree_.nearestKSearch (o, 1, nn, nn_dist) > 0)
-        push_faces_of (seed_tree_vertices_[nn[0]]);
+      // Seed: the vertex closest to the origin (Section 2), and the two pair vertices. With
+      // seed_every_component_, also the closest vertex of every other component that can reach the
+      // grid: a triangle meets the cube only if each of its vertices lies within its longest edge of a
+      // point of the cube, i.e. within h sqrt(3) + longest edge of the origin.
+      const double cube_radius = (half_extent_ + growth_margin_) * std::sqrt (3.0);
+      int best_vertex = -1;
+      double best_d2 = std::numeric_limits<double>::infinity ();
+      for (int c = 0; c + 1 < static_cast<int> (component_offsets_.size ()); ++c)
+      {
+        int closest = -1;
+        double closest_d2 = std::numeric_limits<double>::infinity ();
+        for (int k = component_offsets_[c]; k < component_offsets_[c + 1]; ++k)
+        {
+          const double d2 = (vertices_[face_vertices_[k]] - origin).squaredNorm ();
+          if (d2 < closest_d2)
+          {
+            closest_d2 = d2;
+            closest = face_vertices_[k];
+          }
+        }
+        if (closest_d2 < best_d2)
+        {
+          best_d2 = closest_d2;
+          best_vertex = closest;
+        }
+        const double reach = cube_radius + component_reach_[c];
+        if (seed_every_component_ && closest_d2 <= reach * reach)
+          push_faces_of (closest);
+      }
+      if (best_vertex >= 0)
+        push_faces_of (best_vertex);
       const int nv = static_cast<int> (vertices_.size ());
       if (seed_a >= 0 && seed_a < nv)
         push_faces_of (seed_a);
@@ -308,10 +383,8 @@ namespace pcl
       for (std::size_t head = 0; head < queue_.size (); ++head)
       {
         const int f = queue_[head];
-        const int clipped_before = stats_.faces_clipped;
-        visitFace (f);
-        if (stats_.faces_clipped == clipped_before)
-          continue;  // completely outside the grid: the region stops here
+        if (!visitFace (f))
+          continue;  // completely outside the grid (and guard band): the region stops here
         for (const int v : faces_[f])
           push_faces_of (v);
       }

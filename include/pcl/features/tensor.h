@@ -11,6 +11,7 @@
 #include <pcl/features/tensor_grid.h>
 #include <pcl/Vertices.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -56,9 +57,15 @@ namespace pcl
     * order_ambiguous = 1 (|z . (p_b - p_a)| < sin(ambiguity angle) |p_b - p_a|) and a matcher should
     * also try flipPairOrder() of one side. One tensor is still produced per pair.
     *
-    * Bins: the exact area of the mesh inside each of the N^3 bins of the grid (see TensorSurfaceGrid),
-    * found by region growing from the vertex closest to the origin (the paper's method) or, with
-    * setRegionGrowing(false), by testing every face.
+    * Bins: the exact area of the mesh inside each of the N^3 bins of the grid (see TensorSurfaceGrid).
+    * Faces are found by region growing from the vertex closest to the origin (the paper's method) or,
+    * with setRegionGrowing(false), by testing every face. The paper's rule (one seed; stop when the
+    * whole frontier is outside the grid) misses surface that re-enters the grid, which on the reduced
+    * Stanford bunny scans happens in 40% of the tensors (4.8% of their area on average), not "very
+    * slim[ly]". So by default region growing is also seeded in every connected component that can
+    * reach the grid and grows through a guard band of twice the grid's half-extent around it
+    * (setSeedEveryComponent, setGrowthMargin): it then agrees with brute force on 99.98% of those
+    * tensors. setSeedEveryComponent(false) and setGrowthMargin(0) give the paper's rule exactly.
     *
     * Errors: compute() follows PCL: on invalid input it prints PCL_ERROR, returns an empty cloud and
     * records the reason (getLastError()). computeOrThrow() throws instead: pcl::BadArgumentException for
@@ -159,6 +166,28 @@ namespace pcl
       /** \brief Whether region growing is used. */
       bool getRegionGrowing () const { return region_growing_; }
 
+      /** \brief Region growing: also seed the closest vertex of every connected component of the mesh
+        * that can reach the grid (true, default), or only the vertex closest to the origin (false: the
+        * paper's single seed, Section 2). Scans split into components at depth discontinuities.
+        * See TensorSurfaceGrid::setSeedEveryComponent. */
+      void setSeedEveryComponent (bool every) { seed_every_component_ = every; }
+      /** \brief Whether every component that can reach the grid is seeded. */
+      bool getSeedEveryComponent () const { return seed_every_component_; }
+
+      /** \brief Region growing: continue through faces outside the grid within a guard band of
+        * \a fraction times the grid's half-extent (default 2; 0: the paper's rule, which on the reduced
+        * Stanford bunny scans misses surface in 40% of the tensors). See TensorSurfaceGrid::setGrowthMargin.
+        * \throw pcl::BadArgumentException when negative */
+      void setGrowthMargin (double fraction)
+      {
+        if (!(fraction >= 0.0) || !std::isfinite (fraction))
+          PCL_TENSOR_THROW (BadArgumentException, "[pcl::TensorEstimation::setGrowthMargin] " << fraction
+                            << " must be non-negative and finite");
+        growth_margin_ = fraction;
+      }
+      /** \brief The guard band as a fraction of the grid's half-extent. */
+      double getGrowthMargin () const { return growth_margin_; }
+
       /** \brief Like compute(), but throw pcl::BadArgumentException or pcl::InvalidScanException
         * with the reason when the input is invalid, instead of returning an empty cloud.
         * \param[out] output one tensor per valid pair */
@@ -191,6 +220,8 @@ namespace pcl
       TensorPairing pairing_{TensorPairing::EITHER};
       double order_ambiguity_angle_{5.0};
       bool region_growing_{true};
+      bool seed_every_component_{true};
+      double growth_margin_{2.0};
 
       ErrorKind error_kind_{ErrorKind::NONE};
       std::string error_message_;

@@ -177,13 +177,15 @@ pcl::TensorEstimation<PointInT, PointNT, PointOutT>::initCompute ()
   }
   catch (const InvalidScanException& e)
   {
-    return fail (ErrorKind::INVALID_SCAN, e.detailedMessage (), true);
+    return fail (ErrorKind::INVALID_SCAN, errorDescription (e), true);
   }
   catch (const BadArgumentException& e)
   {
-    return fail (ErrorKind::BAD_ARGUMENT, e.detailedMessage (), true);
+    return fail (ErrorKind::BAD_ARGUMENT, errorDescription (e), true);
   }
   grid_.setRegionGrowing (region_growing_);
+  grid_.setSeedEveryComponent (seed_every_component_);
+  grid_.setGrowthMargin (growth_margin_);
   return true;
 }
 
