@@ -144,6 +144,7 @@ namespace pcl
                         << " must be positive and finite");
     grid_size_ = grid_size;
     bin_size_ = bin_size;
+    inv_bin_size_ = 1.0 / bin_size;
     dense_.assign (static_cast<std::size_t> (grid_size) * grid_size * grid_size, 0.0);
     touched_.clear ();
   }
@@ -159,8 +160,8 @@ namespace pcl
     return local_[v];
   }
 
-  void
-  TensorSurfaceGrid::split (const Polygon& in, int axis, double plane, Polygon& below, Polygon& above)
+  template <int axis> void
+  TensorSurfaceGrid::split (const Polygon& in, double plane, Polygon& below, Polygon& above)
   {
     // One Sutherland-Hodgman step against the plane u_axis = plane, keeping both sides. The inputs are
     // convex (a triangle cut by at most six axis-aligned planes), so each side has at most 9 vertices.
@@ -225,8 +226,8 @@ namespace pcl
     dense_[bin] += area;
   }
 
-  void
-  TensorSurfaceGrid::sweep (const Polygon& poly, int axis, int flat_prefix)
+  template <int axis> void
+  TensorSurfaceGrid::sweep (const Polygon& poly, int flat_prefix)
   {
     if (poly.n < 3)
       return;
@@ -240,10 +241,11 @@ namespace pcl
     const double half_bins = 0.5 * n;
     if (hi <= -half_extent_ || lo >= half_extent_)
       return;
-    int i0 = static_cast<int> (std::floor (lo / bin_size_ + half_bins));
-    int i1 = static_cast<int> (std::floor (hi / bin_size_ + half_bins));
-    i0 = std::max (i0, 0);
-    i1 = std::min (i1, n - 1);
+    // Bin range; the clamp to [-1, n] keeps the truncating cast a floor.
+    const double x0 = std::min (std::max (lo * inv_bin_size_ + half_bins, -1.0), static_cast<double> (n));
+    const double x1 = std::min (std::max (hi * inv_bin_size_ + half_bins, -1.0), static_cast<double> (n));
+    const int i0 = std::max (static_cast<int> (x0 + 2.0) - 2, 0);
+    const int i1 = std::min (static_cast<int> (x1 + 2.0) - 2, n - 1);
 
     // Cut the polygon slab by slab; the remainder alternates between two buffers (no copies).
     Polygon buffers[2], below;
@@ -252,7 +254,7 @@ namespace pcl
     const double lower_plane = (i0 - half_bins) * bin_size_;
     if (lo < lower_plane)
     {
-      split (*rem, axis, lower_plane, below, buffers[next]);
+      split<axis> (*rem, lower_plane, below, buffers[next]);
       rem = &buffers[next];
       next ^= 1;
     }
@@ -263,11 +265,11 @@ namespace pcl
       const bool cut = hi > plane;
       if (cut)
       {
-        split (*rem, axis, plane, below, buffers[next]);
+        split<axis> (*rem, plane, below, buffers[next]);
         piece = &below;
       }
-      if (axis < 2)
-        sweep (*piece, axis + 1, flat_prefix * n + i);
+      if constexpr (axis < 2)
+        sweep<axis + 1> (*piece, flat_prefix * n + i);
       else
         addArea (*piece, flat_prefix * n + i);
       if (!cut || i == i1)
@@ -305,7 +307,7 @@ namespace pcl
       poly.p[1][k] = b[k];
       poly.p[2][k] = c[k];
     }
-    sweep (poly, 0, 0);
+    sweep<0> (poly, 0);
     return true;
   }
 

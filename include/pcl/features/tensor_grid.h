@@ -73,7 +73,7 @@ namespace pcl
       /** \brief Bin size b_s. */
       double getBinSize () const { return bin_size_; }
 
-      /** \brief Visit faces by region growing (true, the paper's method) or by brute force (false). */
+      /** \brief Visit faces by region growing (true, the paper's method) or by brute force (false, default). */
       void setRegionGrowing (bool region_growing) { region_growing_ = region_growing; }
       /** \brief Whether faces are visited by region growing. */
       bool getRegionGrowing () const { return region_growing_; }
@@ -126,8 +126,8 @@ namespace pcl
       };
 
       bool visitFace (int face);
-      void sweep (const Polygon& poly, int axis, int flat_prefix);
-      static void split (const Polygon& in, int axis, double plane, Polygon& below, Polygon& above);
+      template <int Axis> void sweep (const Polygon& poly, int flat_prefix);
+      template <int Axis> static void split (const Polygon& in, double plane, Polygon& below, Polygon& above);
       void addArea (const Polygon& poly, int bin);
       const Eigen::Vector3d& localVertex (int v);
 
@@ -147,7 +147,8 @@ namespace pcl
       // Grid.
       int grid_size_{TENSOR_DEFAULT_GRID_SIZE};
       double bin_size_{0.0};
-      bool region_growing_{true};
+      double inv_bin_size_{0.0};
+      bool region_growing_{false};
       bool seed_every_component_{true};
       double growth_margin_fraction_{2.0};
       double growth_margin_{0.0};
