@@ -146,6 +146,7 @@ namespace pcl
     bin_size_ = bin_size;
     inv_bin_size_ = 1.0 / bin_size;
     dense_.assign (static_cast<std::size_t> (grid_size) * grid_size * grid_size, 0.0);
+    touched_bits_.assign ((dense_.size () + 63) / 64, 0);
     touched_.clear ();
   }
 
@@ -221,8 +222,7 @@ namespace pcl
     const double area = 0.5 * std::abs (sx * current_normal_.x () + sy * current_normal_.y () + sz * current_normal_.z ());
     if (!(area > 0.0))
       return;
-    if (dense_[bin] == 0.0)
-      touched_.push_back (bin);
+    touched_bits_[static_cast<std::size_t> (bin) >> 6] |= std::uint64_t (1) << (bin & 63);
     dense_[bin] += area;
   }
 
@@ -403,7 +403,18 @@ namespace pcl
       }
     }
 
-    std::sort (touched_.begin (), touched_.end ());
+    // Sorted bin order from the bitmap of touched bins (cheaper than sorting them).
+    touched_.clear ();
+    for (std::size_t w = 0; w < touched_bits_.size (); ++w)
+    {
+      std::uint64_t bits = touched_bits_[w];
+      touched_bits_[w] = 0;
+      while (bits)
+      {
+        touched_.push_back (static_cast<int> (w * 64 + static_cast<std::size_t> (__builtin_ctzll (bits))));
+        bits &= bits - 1;
+      }
+    }
     const double min_area = 1e-12 * bin_size_ * bin_size_;
     bin_index.clear ();
     bin_area.clear ();

@@ -159,7 +159,8 @@ namespace pcl
       double half_extent_{0.0};
       Eigen::Vector3d current_normal_{Eigen::Vector3d::Zero ()};
       std::vector<double> dense_;                       // N^3 accumulator, zero between calls
-      std::vector<int> touched_;                        // bins made non-zero in this call
+      std::vector<int> touched_;                        // bins made non-zero in this call, sorted
+      std::vector<std::uint64_t> touched_bits_;         // bitmap of the same bins while accumulating
       std::vector<Eigen::Vector3d> local_;              // local coordinates, valid when stamp matches
       std::vector<std::uint32_t> local_stamp_;
       std::vector<std::uint32_t> face_stamp_;
