@@ -131,7 +131,7 @@ namespace
     est.setGridSize (static_cast<int> (state.range (0)));
     configure (est, static_cast<int> (state.range (1)));
     std::vector<pcl::PointCloud<pcl::TensorDescriptor>> out (scans.size ());
-    std::size_t tensors = 0;
+    std::size_t tensors = 0, visited = 0, clipped = 0;
     for (auto _ : state)
       for (std::size_t v = 0; v < scans.size (); ++v)
       {
@@ -141,7 +141,11 @@ namespace
         est.setObjectDimensions (scans[v].dims);
         est.computeOrThrow (out[v]);
         tensors += out[v].size ();
+        visited += est.getFacesVisited ();
+        clipped += est.getFacesClipped ();
       }
+    state.counters["faces_visited"] = static_cast<double> (visited) / static_cast<double> (tensors);
+    state.counters["faces_clipped"] = static_cast<double> (clipped) / static_cast<double> (tensors);
     pcl::PointCloud<pcl::TensorDescriptor> all;
     std::size_t faces = 0;
     for (std::size_t v = 0; v < scans.size (); ++v)

@@ -193,6 +193,12 @@ namespace pcl
       /** \brief The guard band as a fraction of the grid's half-extent. */
       double getGrowthMargin () const { return growth_margin_; }
 
+      /** \brief Faces whose local bounding box was tested, summed over the tensors of the last
+        * compute() (the cost of face visiting: region growing against brute force). */
+      std::size_t getFacesVisited () const { return faces_visited_; }
+      /** \brief Faces that met a grid and were clipped, summed over the tensors of the last compute(). */
+      std::size_t getFacesClipped () const { return faces_clipped_; }
+
       /** \brief Like compute(), but throw pcl::BadArgumentException or pcl::InvalidScanException
         * with the reason when the input is invalid, instead of returning an empty cloud.
         * \param[out] output one tensor per valid pair */
@@ -228,6 +234,8 @@ namespace pcl
       bool seed_every_component_{true};
       double growth_margin_{2.0};
 
+      std::size_t faces_visited_{0};
+      std::size_t faces_clipped_{0};
       ErrorKind error_kind_{ErrorKind::NONE};
       std::string error_message_;
       std::vector<Eigen::Vector3d> vertices_;   // validated copies of the input, in double

@@ -56,7 +56,7 @@ namespace pcl
       void
       setMesh (const std::vector<Eigen::Vector3d>& vertices, const std::vector<pcl::Vertices>& polygons);
 
-      /** \brief Number of triangles of the mesh. */
+      /** \brief Number of triangles of the mesh (0 before setMesh). */
       std::size_t getNumFaces () const { return faces_.size (); }
 
       /** \brief Area of the mesh (sum of its triangles). */
