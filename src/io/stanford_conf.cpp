@@ -1,0 +1,94 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#include <pcl/io/stanford_conf.h>
+#include <pcl/common/tensor_exceptions.h>
+
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace pcl
+{
+  namespace io
+  {
+    Eigen::Affine3d
+    StanfordConfEntry::pose () const
+    {
+      Eigen::Affine3d p = Eigen::Affine3d::Identity ();
+      p.linear () = quaternion.normalized ().toRotationMatrix ().transpose ();
+      p.translation () = translation;
+      return p;
+    }
+
+    StanfordConfEntry
+    StanfordConfEntry::fromPose (const std::string& file, const Eigen::Affine3d& scan_to_world)
+    {
+      StanfordConfEntry e;
+      e.file = file;
+      e.translation = scan_to_world.translation ();
+      // R(q)^T is the pose's rotation, so q is the conjugate of the rotation's quaternion.
+      e.quaternion = Eigen::Quaterniond (scan_to_world.rotation ()).conjugate ();
+      return e;
+    }
+
+    namespace
+    {
+      StanfordConfEntry
+      parseBmesh (std::istringstream& in, const std::string& path, int line_no)
+      {
+        StanfordConfEntry e;
+        double qx, qy, qz, qw;
+        std::string extra;
+        if (!(in >> e.file >> e.translation.x () >> e.translation.y () >> e.translation.z () >> qx >> qy >> qz >> qw)
+            || (in >> extra))
+          PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no
+                            << ": a bmesh line needs FILE tx ty tz qx qy qz qw");
+        e.quaternion = Eigen::Quaterniond (qw, qx, qy, qz);
+        if (!(e.quaternion.norm () > 0.0) || !e.translation.allFinite ())
+          PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": invalid pose");
+        return e;
+      }
+    }
+
+    std::vector<StanfordConfEntry>
+    loadStanfordConf (const std::string& path)
+    {
+      std::ifstream file (path);
+      if (!file)
+        PCL_TENSOR_THROW (pcl::IOException, "cannot open '" << path << "'");
+      std::vector<StanfordConfEntry> entries;
+      std::string line;
+      for (int line_no = 1; std::getline (file, line); ++line_no)
+      {
+        std::istringstream in (line);
+        std::string keyword;
+        if (!(in >> keyword) || keyword[0] == '#' || keyword == "camera" || keyword == "mesh")
+          continue;
+        if (keyword != "bmesh")
+          PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": unknown keyword '" << keyword << "'");
+        entries.push_back (parseBmesh (in, path, line_no));
+      }
+      return entries;
+    }
+
+    void
+    saveStanfordConf (const std::string& path, const std::vector<StanfordConfEntry>& entries)
+    {
+      std::ostringstream out;
+      out.precision (std::numeric_limits<double>::max_digits10);
+      for (const auto& e : entries)
+      {
+        if (e.file.empty () || e.file.find_first_of (" \t\r\n") != std::string::npos)
+          PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << e.file << "' into a .conf file: empty or white space");
+        const auto& t = e.translation;
+        const auto& q = e.quaternion;
+        out << "bmesh " << e.file << ' ' << t.x () << ' ' << t.y () << ' ' << t.z () << ' '
+            << q.x () << ' ' << q.y () << ' ' << q.z () << ' ' << q.w () << '\n';
+      }
+      std::ofstream file (path);
+      if (!(file << out.str ()) || !file.flush ())
+        PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << path << "'");
+    }
+  }
+}

@@ -1,0 +1,85 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#include <pcl/registration/registration_error.h>
+#include <pcl/common/point_tests.h>
+#include <pcl/common/tensor_exceptions.h>
+#include <pcl/kdtree/kdtree_flann.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace pcl
+{
+  double
+  rotationErrorDeg (const Eigen::Matrix3d& rotation, const Eigen::Matrix3d& ground_truth)
+  {
+    // R_gt^-1 = R_gt^T for a rotation (Eq. 10).
+    const Eigen::Matrix3d rd = rotation * ground_truth.transpose ();
+    const double c = std::clamp ((rd.trace () - 1.0) / 2.0, -1.0, 1.0);
+    return std::acos (c) * 180.0 / M_PI;
+  }
+
+  double
+  translationErrorResolutions (const Eigen::Vector3d& translation, const Eigen::Vector3d& ground_truth,
+                               double resolution)
+  {
+    if (!(resolution > 0.0) || !std::isfinite (resolution))
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "translation error needs d_res > 0, got " << resolution);
+    return (translation - ground_truth).norm () / resolution;
+  }
+
+  RegistrationError
+  registrationError (const Eigen::Affine3d& estimate, const Eigen::Affine3d& ground_truth, double resolution)
+  {
+    RegistrationError e;
+    e.translation_resolutions = translationErrorResolutions (estimate.translation (), ground_truth.translation (),
+                                                             resolution);
+    e.rotation_deg = rotationErrorDeg (estimate.linear (), ground_truth.linear ());
+    return e;
+  }
+
+  namespace
+  {
+    pcl::PointCloud<pcl::PointXYZ>::Ptr
+    finiteTransformed (const pcl::PointCloud<pcl::PointXYZ>& in, const Eigen::Affine3d& pose)
+    {
+      pcl::PointCloud<pcl::PointXYZ>::Ptr out (new pcl::PointCloud<pcl::PointXYZ>);
+      out->reserve (in.size ());
+      for (const auto& p : in)
+        if (pcl::isXYZFinite (p))
+        {
+          pcl::PointXYZ q;
+          q.getVector3fMap () = (pose * p.getVector3fMap ().cast<double> ()).cast<float> ();
+          out->push_back (q);
+        }
+      if (out->empty ())
+        PCL_TENSOR_THROW (InvalidScanException, "viewOverlap: a view has no finite point");
+      return out;
+    }
+  }
+
+  double
+  viewOverlap (const pcl::PointCloud<pcl::PointXYZ>& cloud_a, const Eigen::Affine3d& pose_a,
+               const pcl::PointCloud<pcl::PointXYZ>& cloud_b, const Eigen::Affine3d& pose_b,
+               double max_distance)
+  {
+    if (!(max_distance > 0.0) || !std::isfinite (max_distance))
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "viewOverlap needs a positive distance, got " << max_distance);
+    auto a = finiteTransformed (cloud_a, pose_a);
+    auto b = finiteTransformed (cloud_b, pose_b);
+    // Eq. 14 divides by the smaller vertex count, so the smaller view is the one queried.
+    if (a->size () > b->size ())
+      std::swap (a, b);
+    pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+    tree.setInputCloud (b);
+    const double max_sq = max_distance * max_distance;
+    pcl::Indices index (1);
+    std::vector<float> sq (1);
+    std::size_t matched = 0;
+    for (const auto& p : *a)
+      if (tree.nearestKSearch (p, 1, index, sq) == 1 && sq[0] <= max_sq)
+        ++matched;
+    return static_cast<double> (matched) / static_cast<double> (a->size ());
+  }
+}

@@ -1,0 +1,75 @@
+/*
+ * pcl_tensor: known-answer tests of the error measures of Section 7 (Eqs. 10-12 and 14).
+ */
+#include "test_utils.h"
+
+#include <pcl/common/tensor_exceptions.h>
+#include <pcl/registration/registration_error.h>
+
+namespace
+{
+  pcl::PointCloud<pcl::PointXYZ>
+  grid (int n, double spacing)
+  {
+    pcl::PointCloud<pcl::PointXYZ> c;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j)
+        c.push_back (pcl::PointXYZ (static_cast<float> (i * spacing), static_cast<float> (j * spacing), 0.0f));
+    return c;
+  }
+}
+
+TEST (RegistrationError, OneDegreeRotationGivesOneDegree)
+{
+  const Eigen::Matrix3d gt (Eigen::AngleAxisd (0.7, Eigen::Vector3d (1, 2, 3).normalized ()));
+  const Eigen::Matrix3d est = Eigen::AngleAxisd (M_PI / 180.0, Eigen::Vector3d (-2, 0, 1).normalized ()) * gt;
+  EXPECT_NEAR (pcl::rotationErrorDeg (est, gt), 1.0, 1e-6);
+  EXPECT_NEAR (pcl::rotationErrorDeg (gt, gt), 0.0, 1e-6);
+  // Rounding pushes (trace - 1) / 2 past 1 for equal rotations; the clamp keeps the answer a number.
+  EXPECT_FALSE (std::isnan (pcl::rotationErrorDeg (Eigen::Matrix3d::Identity () * (1.0 + 1e-15), Eigen::Matrix3d::Identity ())));
+  const Eigen::Matrix3d half_turn (Eigen::AngleAxisd (M_PI, Eigen::Vector3d::UnitZ ()));
+  EXPECT_NEAR (pcl::rotationErrorDeg (half_turn, Eigen::Matrix3d::Identity ()), 180.0, 1e-6);
+}
+
+TEST (RegistrationError, ThreeResolutionsOfTranslationGiveThree)
+{
+  const double d_res = 0.0015;
+  const Eigen::Vector3d gt (0.1, -0.2, 0.3);
+  const Eigen::Vector3d est = gt + 3.0 * d_res * Eigen::Vector3d (2, -1, 2).normalized ();
+  EXPECT_NEAR (pcl::translationErrorResolutions (est, gt, d_res), 3.0, 1e-9);
+  EXPECT_THROW (pcl::translationErrorResolutions (est, gt, 0.0), pcl::BadArgumentException);
+
+  const Eigen::Affine3d gt_pose = Eigen::Translation3d (gt) * Eigen::AngleAxisd (0.3, Eigen::Vector3d::UnitX ());
+  const Eigen::Affine3d est_pose = Eigen::Translation3d (est) * Eigen::AngleAxisd (0.3 + M_PI / 180.0, Eigen::Vector3d::UnitX ());
+  const auto e = pcl::registrationError (est_pose, gt_pose, d_res);
+  EXPECT_NEAR (e.rotation_deg, 1.0, 1e-6);
+  EXPECT_NEAR (e.translation_resolutions, 3.0, 1e-9);
+}
+
+TEST (RegistrationError, IdenticalViewsOverlapFully)
+{
+  const auto c = grid (30, 0.001);
+  const Eigen::Affine3d pose = Eigen::Translation3d (1, 2, 3) * Eigen::AngleAxisd (0.5, Eigen::Vector3d::UnitY ());
+  EXPECT_DOUBLE_EQ (pcl::viewOverlap (c, pose, c, pose, 0.002), 1.0);
+}
+
+TEST (RegistrationError, DisjointViewsDoNotOverlap)
+{
+  const auto c = grid (30, 0.001);
+  const Eigen::Affine3d far = Eigen::Affine3d (Eigen::Translation3d (1.0, 0.0, 0.0));
+  EXPECT_DOUBLE_EQ (pcl::viewOverlap (c, Eigen::Affine3d::Identity (), c, far, 0.002), 0.0);
+}
+
+// Half of the smaller view lies on the larger one: Eq. 14 divides by the smaller vertex count.
+TEST (RegistrationError, OverlapCountsTheSmallerView)
+{
+  const auto big = grid (40, 0.001);     // x, y in [0, 0.039]
+  auto small = grid (20, 0.001);         // moved so that half of its columns fall beyond x = 0.039
+  const Eigen::Affine3d shift = Eigen::Affine3d (Eigen::Translation3d (0.030, 0.0, 0.0));
+  // Columns at x = 0.030 .. 0.039 match (10 of 20); with 0.5 mm tolerance the rest are >= 1 mm away.
+  EXPECT_DOUBLE_EQ (pcl::viewOverlap (big, Eigen::Affine3d::Identity (), small, shift, 0.0005), 0.5);
+  EXPECT_DOUBLE_EQ (pcl::viewOverlap (small, shift, big, Eigen::Affine3d::Identity (), 0.0005), 0.5);
+  EXPECT_THROW (pcl::viewOverlap (big, shift, small, shift, 0.0), pcl::BadArgumentException);
+  small.clear ();
+  EXPECT_THROW (pcl::viewOverlap (big, shift, small, shift, 0.001), pcl::InvalidScanException);
+}
