@@ -8,6 +8,8 @@
 #include <pcl/features/tensor.h>
 #include <pcl/registration/correspondence_rejection_tensor_verification.h>
 
+#include <cmath>
+
 namespace pcl
 {
   namespace registration
@@ -27,6 +29,36 @@ namespace pcl
       pcl::PointCloud<pcl::TensorDescriptor>::Ptr tensors (new pcl::PointCloud<pcl::TensorDescriptor>);
       estimation.computeOrThrow (*tensors);
       return tensors;
+    }
+
+    namespace
+    {
+      /** Hypotheses that reached ICP and failed; a close repeat would fail the same way. */
+      class RefutedHypotheses
+      {
+        public:
+          RefutedHypotheses (double degrees, double distance) : cos_half_ (std::cos (degrees * M_PI / 360.0)), distance_ (distance) {}
+
+          bool
+          contains (const Eigen::Matrix4f& t) const
+          {
+            for (const auto& r : refuted_)
+            {
+              const Eigen::Matrix3f d = t.topLeftCorner<3, 3> () * r.topLeftCorner<3, 3> ().transpose ();
+              // cos(angle / 2) from the trace of the difference rotation, without acos.
+              const double cos_half = 0.5 * std::sqrt (std::max (0.0, 1.0 + static_cast<double> (d.trace ())));
+              if (cos_half >= cos_half_ && (t.topRightCorner<3, 1> () - r.topRightCorner<3, 1> ()).norm () <= distance_)
+                return true;
+            }
+            return false;
+          }
+
+          void add (const Eigen::Matrix4f& t) { refuted_.push_back (t); }
+
+        private:
+          double cos_half_, distance_;
+          std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> refuted_;
+      };
     }
 
     void
@@ -62,6 +94,8 @@ namespace pcl
       report.transform = Eigen::Matrix4f::Identity ();
       report.failures.fill (0);
       report.hypotheses_tried = 0;
+      report.hypotheses_skipped = 0;
+      RefutedHypotheses refuted (params.repeat_rotation, params.repeat_translation * report.resolution);
       const std::vector<TensorMatch>& matches = estimation.getMatches ();
       for (const TensorMatch& match : matches)
       {
@@ -70,6 +104,11 @@ namespace pcl
         const TensorDescriptor& scene_tensor = (*scene_tensors)[match.scene];
         const Eigen::Matrix4f hypothesis = transformFromTensorPair (
             (*model_tensors)[match.model], match.scene_flipped ? flipPairOrder (scene_tensor) : scene_tensor);
+        if (refuted.contains (hypothesis))
+        {
+          ++report.hypotheses_skipped;
+          continue;
+        }
         ++report.hypotheses_tried;
         TensorVerificationResult result;
         if (verification.verify (hypothesis, result))
@@ -81,6 +120,8 @@ namespace pcl
           break;
         }
         ++report.failures[static_cast<std::size_t> (result.stage)];
+        if (result.stage == TensorVerificationStage::FINE_OVERLAP || result.stage == TensorVerificationStage::FINE_DIMENSIONS)
+          refuted.add (hypothesis);
       }
       report.timings.verification_ms = watch.getTime ();
     }
