@@ -108,9 +108,20 @@ TEST (TensorRegistration, SymmetricObjectGivesTheTruePoseOrNone)
 TEST (TensorRegistration, ReportsBadInputLoudly)
 {
   TensorRegistration registration;
-  pcl::PointCloud<pcl::PointXYZ>::Ptr empty (new pcl::PointCloud<pcl::PointXYZ>);
-  registration.setInputSource (empty);
+  pcl::PointCloud<pcl::PointXYZ>::Ptr all_nan (new pcl::PointCloud<pcl::PointXYZ> (8, 8, pcl::PointXYZ (std::nanf (""), 0, 0)));
+  all_nan->is_dense = false;
+  registration.setInputSource (all_nan);
   registration.setInputTarget (exampleViews ()[0].view.cloud);
   pcl::PointCloud<pcl::PointXYZ> out;
-  EXPECT_THROW (registration.align (out), pcl::PCLException);
+  EXPECT_THROW (registration.alignOrThrow (out), pcl::InvalidScanException);
+  EXPECT_FALSE (registration.hasConverged ());
+
+  // PCL's setInputSource refuses an empty cloud, so the source is then missing.
+  TensorRegistration unset;
+  unset.setInputSource (pcl::PointCloud<pcl::PointXYZ>::Ptr (new pcl::PointCloud<pcl::PointXYZ>));
+  unset.setInputTarget (exampleViews ()[0].view.cloud);
+  EXPECT_THROW (unset.alignOrThrow (out), pcl::BadArgumentException);
+  unset.align (out);  // PCL's own contract: logged, not converged
+  EXPECT_FALSE (unset.hasConverged ());
+  EXPECT_FALSE (unset.getReport ().registered);
 }

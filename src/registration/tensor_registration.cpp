@@ -3,6 +3,7 @@
  */
 #include <pcl/registration/tensor_registration.h>
 #include <pcl/common/tensor_exceptions.h>
+#include <pcl/common/point_tests.h>
 #include <pcl/common/time.h>
 #include <pcl/common/transforms.h>
 #include <pcl/features/tensor.h>
@@ -124,6 +125,22 @@ namespace pcl
           refuted.add (hypothesis);
       }
       report.timings.verification_ms = watch.getTime ();
+    }
+
+    void
+    TensorRegistration::alignOrThrow (PointCloudSource& output)
+    {
+      if (!input_ || !target_)
+        PCL_TENSOR_THROW (BadArgumentException, "TensorRegistration needs a non-empty source (scene) and target (model) cloud");
+      for (const auto* cloud : {input_.get (), target_.get ()})
+      {
+        std::size_t finite = 0;
+        for (const auto& p : *cloud)
+          finite += pcl::isXYZFinite (p) ? 1 : 0;
+        if (finite < 3)
+          PCL_TENSOR_THROW (InvalidScanException, "a range image to register has " << finite << " finite points; at least 3 are needed");
+      }
+      align (output);
     }
 
     void

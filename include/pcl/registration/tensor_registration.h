@@ -129,6 +129,12 @@ namespace pcl
           */
         void setObjectDimensions (const ObjectDimensions& dims) { dims_ = dims; has_dims_ = true; }
 
+        /** \brief align(), but unusable input throws instead of being logged by PCL's Registration:
+          * pcl::BadArgumentException when a cloud is missing, pcl::InvalidScanException when one has
+          * fewer than three finite points. Either way no transform is reported.
+          */
+        void alignOrThrow (PointCloudSource& output);
+
         /** \brief What the last align() did. */
         const TensorRegistrationReport& getReport () const { return report_; }
 
