@@ -1,6 +1,8 @@
 /*
  * pcl_tensor_mesh: range image -> fine mesh M_i -> reduced mesh M'_i with vertex normals (Section 2).
  */
+#include "tool_main.h"
+
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
@@ -15,8 +17,6 @@ using namespace pcl::console;
 
 namespace
 {
-  constexpr int kExitBadInput = 2;
-
   void
   printHelp (const char* name)
   {
@@ -29,7 +29,7 @@ namespace
     print_info ("  --edge-std K         prune triangles with an edge over mean + K stddev (default "); print_value ("%g", d.edge_std_devs); print_info (")\n");
     print_info ("  --normals fine|face  normal approach (b) or (a) of Section 2 (default "); print_value ("fine"); print_info (")\n");
     print_info ("  --normal-radius R    radius of approach (b), in d_res (default "); print_value ("%g", d.normal_radius_resolutions); print_info (")\n");
-    print_info ("  --viewpoint x,y,z    perspective sensor position (default: the file's pose; +z for PLY)\n");
+    print_info ("  --viewpoint x,y,z    perspective sensor at x,y,z looking at the scan (default: the file's pose; +z for PLY)\n");
     print_info ("Exit codes: 0 done, 2 bad input or usage.\n");
   }
 
@@ -80,22 +80,7 @@ namespace
     timer.tic ();
     pcl::io::RangeScan scan = pcl::io::loadRangeScan (argv[scan_args[0]]);
     print_info ("Loaded "); print_value ("%zu", scan.finite_points); print_info (" points in "); print_value ("%g", timer.toc ()); print_info (" ms\n");
-    std::vector<double> viewpoint;
-    if (parse_x_arguments (argc, argv, "--viewpoint", viewpoint) > 0)
-    {
-      if (viewpoint.size () != 3)
-        PCL_TENSOR_THROW (pcl::BadArgumentException, "--viewpoint takes x,y,z");
-      Eigen::Vector4f centroid = Eigen::Vector4f::Zero ();
-      std::size_t n = 0;
-      for (const auto& p : *scan.cloud)
-        if (std::isfinite (p.x))
-        {
-          centroid += p.getVector4fMap ();
-          ++n;
-        }
-      scan.viewpoint = pcl::ScanViewpoint::lookingAt (Eigen::Vector3d (viewpoint[0], viewpoint[1], viewpoint[2]),
-                                                      (centroid.head<3> () / static_cast<float> (n)).cast<double> ());
-    }
+    pcl_tensor_tools::parseViewpoint (argc, argv, *scan.cloud, scan.viewpoint);
 
     timer.tic ();
     const pcl::PreparedScan prepared = pcl::prepareScan (*scan.cloud, scan.viewpoint, params);
@@ -115,18 +100,5 @@ namespace
 int
 main (int argc, char** argv)
 {
-  if (argc < 2 || find_switch (argc, argv, "-h") || find_switch (argc, argv, "--help"))
-  {
-    printHelp (argv[0]);
-    return argc < 2 ? kExitBadInput : 0;
-  }
-  try
-  {
-    return run (argc, argv);
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "pcl_tensor_mesh: error: " << pcl::errorDescription (e) << std::endl;
-    return kExitBadInput;
-  }
+  return pcl_tensor_tools::toolMain ("pcl_tensor_mesh", argc, argv, printHelp, run);
 }

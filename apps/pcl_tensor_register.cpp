@@ -1,6 +1,8 @@
 /*
  * pcl_tensor_register: automatic pairwise registration of two range images (Mian et al., 2006).
  */
+#include "tool_main.h"
+
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/common/transforms.h>
 #include <pcl/console/parse.h>
@@ -19,7 +21,6 @@ using namespace pcl::console;
 namespace
 {
   constexpr int kExitRegistered = 0;
-  constexpr int kExitBadInput = 2;
   constexpr int kExitNotRegistered = 3;
 
   void
@@ -39,7 +40,7 @@ namespace
     print_info ("  --max-hypotheses N give up after N hypotheses, 0 = all (default %d)\n", d.max_hypotheses);
     print_info ("  --nc F             n_c as a fraction of the smaller view (default %g)\n", d.verification.correspondence_fraction);
     print_info ("  --dims X,Y,Z       object dimensions D (default: from the two views, Eq. 1)\n");
-    print_info ("  --viewpoint x,y,z  perspective sensor position for both scans (default: file pose; +z for PLY)\n");
+    print_info ("  --viewpoint x,y,z  perspective sensor at x,y,z looking at each scan (default: file pose; +z for PLY)\n");
     print_info ("Exit codes: 0 registered, 3 not registered (no hypothesis passed verification), 2 bad input or usage.\n");
   }
 
@@ -138,19 +139,11 @@ namespace
     const double load_ms = timer.toc ();
     registration.setInputTarget (model.cloud);
     registration.setInputSource (scene.cloud);
-    registration.setTargetViewpoint (model.viewpoint);
-    registration.setSourceViewpoint (scene.viewpoint);
-    std::vector<double> viewpoint;
-    if (parse_x_arguments (argc, argv, "--viewpoint", viewpoint) > 0)
-    {
-      if (viewpoint.size () != 3)
-        PCL_TENSOR_THROW (pcl::BadArgumentException, "--viewpoint takes x,y,z");
-      pcl::ScanViewpoint v = pcl::ScanViewpoint::fromPositiveZ ();
-      v.sensor_pose.translation () = Eigen::Vector3d (viewpoint[0], viewpoint[1], viewpoint[2]);
-      v.orthographic = false;
-      registration.setTargetViewpoint (v);
-      registration.setSourceViewpoint (v);
-    }
+    pcl::ScanViewpoint model_view = model.viewpoint, scene_view = scene.viewpoint;
+    if (pcl_tensor_tools::parseViewpoint (argc, argv, *model.cloud, model_view))
+      pcl_tensor_tools::parseViewpoint (argc, argv, *scene.cloud, scene_view);
+    registration.setTargetViewpoint (model_view);
+    registration.setSourceViewpoint (scene_view);
 
     pcl::PointCloud<pcl::PointXYZ> aligned;
     registration.alignOrThrow (aligned);
@@ -163,7 +156,11 @@ namespace
       printText (report);
     }
     if (!report.registered)
+    {
+      std::cerr << "pcl_tensor_register: not registered: none of " << report.hypotheses_tried
+                << " hypotheses passed verification" << std::endl;
       return kExitNotRegistered;
+    }
     if (!output.empty () && pcl::io::savePLYFileBinary (output, aligned) < 0)
       PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << output << "'");
     return kExitRegistered;
@@ -173,18 +170,5 @@ namespace
 int
 main (int argc, char** argv)
 {
-  if (argc < 2 || find_switch (argc, argv, "-h") || find_switch (argc, argv, "--help"))
-  {
-    printHelp (argv[0]);
-    return argc < 2 ? kExitBadInput : 0;
-  }
-  try
-  {
-    return run (argc, argv);
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "pcl_tensor_register: error: " << pcl::errorDescription (e) << std::endl;
-    return kExitBadInput;
-  }
+  return pcl_tensor_tools::toolMain ("pcl_tensor_register", argc, argv, printHelp, run);
 }

@@ -3,6 +3,8 @@
  *
  * A thin shell over pcl::renderSyntheticViews: load, render, save, each step timed.
  */
+#include "tool_main.h"
+
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
@@ -23,7 +25,6 @@ using namespace pcl::console;
 
 namespace
 {
-  constexpr int kUsageError = 2;
 
   void
   printHelp (const char* name)
@@ -172,23 +173,5 @@ namespace
 int
 main (int argc, char** argv)
 {
-  if (argc < 2 || find_switch (argc, argv, "-h") || find_switch (argc, argv, "--help"))
-  {
-    printHelp (argv[0]);
-    return argc < 2 ? kUsageError : 0;
-  }
-  try
-  {
-    return run (argc, argv);
-  }
-  catch (const pcl::PCLException& e)
-  {
-    std::cerr << "pcl_tensor_views: error: " << pcl::errorDescription (e) << std::endl;
-    return kUsageError;
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "pcl_tensor_views: internal error: " << e.what () << std::endl;
-    return 1;
-  }
+  return pcl_tensor_tools::toolMain ("pcl_tensor_views", argc, argv, printHelp, run);
 }
