@@ -183,8 +183,13 @@ namespace pcl
             || c.index_match < 0 || static_cast<std::size_t> (c.index_match) >= model_tensors_->size ())
           PCL_TENSOR_THROW (BadArgumentException, "correspondence " << c.index_query << " -> " << c.index_match
                             << " is outside the tensor clouds");
+        // A correspondence does not say which pair order matched; an ambiguous scene tensor
+        // (TensorDescriptor::order_ambiguous) is tried in both.
+        const TensorDescriptor& model = (*model_tensors_)[c.index_match];
+        const TensorDescriptor& scene = (*scene_tensors_)[c.index_query];
         TensorVerificationResult result;
-        if (verify (transformFromTensorPair ((*model_tensors_)[c.index_match], (*scene_tensors_)[c.index_query]), result))
+        if (verify (transformFromTensorPair (model, scene), result)
+            || (scene.order_ambiguous && verify (transformFromTensorPair (model, flipPairOrder (scene)), result)))
         {
           kept.push_back (c);
           accepted_transforms_.push_back (result.transform);

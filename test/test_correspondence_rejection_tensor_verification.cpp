@@ -1,0 +1,114 @@
+#include <pcl/common/tensor_exceptions.h>
+#include <pcl/registration/correspondence_rejection_tensor_verification.h>
+#include <pcl/registration/registration_error.h>
+#include <pcl/registration/tensor_registration.h>
+#include <pcl/simulation/example_object.h>
+#include <pcl/simulation/synthetic_views.h>
+#include <pcl/simulation/view_set.h>
+
+#include <gtest/gtest.h>
+
+namespace
+{
+  using namespace pcl::registration;
+
+  /** One prepared synthetic view with its tensors and exact pose. */
+  struct View
+  {
+    std::shared_ptr<pcl::PreparedScan> scan;
+    pcl::PointCloud<pcl::TensorDescriptor>::Ptr tensors;
+    Eigen::Affine3d pose;
+  };
+
+  const std::vector<View>&
+  views ()
+  {
+    static const std::vector<View> prepared = [] {
+      pcl::SyntheticViewParams params;
+      params.camera.width = params.camera.height = 300;
+      const auto rendered = pcl::renderSyntheticViews (pcl::makeExampleObject (), pcl::makeRingViewDirections (12, 30.0), params);
+      const TensorRegistrationParams defaults;
+      std::vector<const pcl::PointCloud<pcl::PointNormal>*> clouds;
+      std::vector<View> out;
+      for (const auto& r : rendered)
+        out.push_back ({std::make_shared<pcl::PreparedScan> (pcl::prepareScan (*r.view.cloud, r.view.viewpoint, defaults.preparation)),
+                        nullptr, r.view.pose});
+      for (const auto& v : out)
+        clouds.push_back (v.scan->fine.cloud.get ());
+      const pcl::ObjectDimensions dims = pcl::computeObjectDimensions<pcl::PointNormal> (clouds);
+      for (auto& v : out)
+        v.tensors = computeViewTensors (*v.scan, dims, defaults);
+      return out;
+    } ();
+    return prepared;
+  }
+
+  /** The rejector and the best-first matches of scene view \a s against model view \a m. */
+  pcl::Correspondences
+  setUp (CorrespondenceRejectorTensorVerification& rejector, int m, int s)
+  {
+    std::vector<const pcl::PointCloud<pcl::PointNormal>*> clouds;
+    for (const auto& v : views ())
+      clouds.push_back (v.scan->fine.cloud.get ());
+    rejector.setModel (views ()[m].scan, views ()[m].tensors);
+    rejector.setScene (views ()[s].scan, views ()[s].tensors);
+    rejector.setObjectDimensions (pcl::computeObjectDimensions<pcl::PointNormal> (clouds));
+    CorrespondenceEstimationTensor estimation;
+    estimation.setInputSource (views ()[s].tensors);
+    estimation.setInputTarget (views ()[m].tensors);
+    pcl::Correspondences c;
+    estimation.determineCorrespondences (c);
+    if (c.size () > 60)
+      c.resize (60);  // the best 60 are plenty for a true pair, and keep the refusal fast
+    return c;
+  }
+}
+
+TEST (CorrespondenceRejectorTensorVerification, KeepsAVerifiedMatchWithItsRefinedTransform)
+{
+  CorrespondenceRejectorTensorVerification rejector;
+  const pcl::Correspondences matches = setUp (rejector, 0, 1);
+  rejector.setMaxAccepted (1);
+  pcl::Correspondences kept;
+  rejector.getRemainingCorrespondences (matches, kept);
+  ASSERT_EQ (kept.size (), 1u);
+  ASSERT_EQ (rejector.getAcceptedTransforms ().size (), 1u);
+  const auto error = pcl::registrationError (Eigen::Affine3d (rejector.getAcceptedTransforms ()[0].cast<double> ()),
+                                             views ()[0].pose.inverse () * views ()[1].pose, rejector.getResolution ());
+  EXPECT_LT (error.rotation_deg, 0.5);
+  EXPECT_LT (error.translation_resolutions, 1.0);
+}
+
+TEST (CorrespondenceRejectorTensorVerification, RejectsEveryMatchOfViewsThatDoNotOverlap)
+{
+  CorrespondenceRejectorTensorVerification rejector;
+  const pcl::Correspondences matches = setUp (rejector, 0, 6);
+  pcl::Correspondences kept;
+  rejector.getRemainingCorrespondences (matches, kept);
+  EXPECT_TRUE (kept.empty ()) << kept.size () << " of " << matches.size () << " matches of front and back views passed";
+}
+
+TEST (CorrespondenceRejectorTensorVerification, VerifyReportsTheFailingStage)
+{
+  CorrespondenceRejectorTensorVerification rejector;
+  setUp (rejector, 0, 1);
+  TensorVerificationResult result;
+  // The scene thrown a whole object length away cannot fit the object's dimensions.
+  Eigen::Matrix4f far = Eigen::Matrix4f::Identity ();
+  far (0, 3) = 1.0f;
+  EXPECT_FALSE (rejector.verify (far, result));
+  EXPECT_EQ (result.stage, TensorVerificationStage::COARSE_DIMENSIONS);
+  // The exact pose passes every stage.
+  const Eigen::Matrix4f exact = (views ()[0].pose.inverse () * views ()[1].pose).matrix ().cast<float> ();
+  EXPECT_TRUE (rejector.verify (exact, result)) << toString (result.stage);
+  EXPECT_GE (result.fine_correspondences, 2.0 * result.required_correspondences);
+}
+
+TEST (CorrespondenceRejectorTensorVerification, MissingInputThrows)
+{
+  CorrespondenceRejectorTensorVerification rejector;
+  TensorVerificationResult result;
+  EXPECT_THROW (rejector.verify (Eigen::Matrix4f::Identity (), result), pcl::BadArgumentException);
+  pcl::Correspondences kept;
+  EXPECT_THROW (rejector.getRemainingCorrespondences (pcl::Correspondences (1), kept), pcl::BadArgumentException);
+}
