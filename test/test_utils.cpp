@@ -87,6 +87,8 @@ namespace pcl_tensor_test
       total += 0.5 * sum.norm ();
     }
     return total;
+  }
+
   const std::vector<std::string>&
   bunnyScanNames ()
   {

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace pcl
@@ -70,21 +71,66 @@ namespace pcl
       for (const int v : faces_[f])
         vertex_faces_[fill[v]++] = static_cast<int> (f);
 
-    pcl::PointCloud<pcl::PointXYZ>::Ptr seeds (new pcl::PointCloud<pcl::PointXYZ>);
-    seed_tree_vertices_.clear ();
+    // Connected components over shared vertices (union-find), and each one's longest edge.
+    std::vector<int> parent (n);
+    for (int i = 0; i < n; ++i)
+      parent[i] = i;
+    auto root = [&parent] (int x)
+    {
+      while (parent[x] != x)
+        x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    for (const auto& t : faces_)
+    {
+      parent[root (t[0])] = root (t[1]);
+      parent[root (t[1])] = root (t[2]);
+    }
+    std::vector<int> component_of_root (n, -1);
+    std::vector<int> vertex_component (n, -1);
+    int components = 0;
     for (int i = 0; i < n; ++i)
       if (vertex_face_offsets_[i + 1] > vertex_face_offsets_[i])
       {
-        seeds->push_back (pcl::PointXYZ (static_cast<float> (vertices_[i].x ()), static_cast<float> (vertices_[i].y ()),
-                                         static_cast<float> (vertices_[i].z ())));
-        seed_tree_vertices_.push_back (i);
+        const int r = root (i);
+        if (component_of_root[r] < 0)
+          component_of_root[r] = components++;
+        vertex_component[i] = component_of_root[r];
       }
-    seed_tree_.setInputCloud (seeds);
+    component_reach_.assign (components, 0.0);
+    for (const auto& t : faces_)
+    {
+      const int c = vertex_component[t[0]];
+      for (int k = 0; k < 3; ++k)
+        component_reach_[c] = std::max (component_reach_[c], (vertices_[t[k]] - vertices_[t[(k + 1) % 3]]).norm ());
+    }
+    component_offsets_.assign (components + 1, 0);
+    for (int i = 0; i < n; ++i)
+      if (vertex_component[i] >= 0)
+        ++component_offsets_[vertex_component[i] + 1];
+    for (int c = 0; c < components; ++c)
+      component_offsets_[c + 1] += component_offsets_[c];
+    face_vertices_.assign (component_offsets_[components], -1);
+    {
+      std::vector<int> fill_c (component_offsets_.begin (), component_offsets_.end () - 1);
+      for (int i = 0; i < n; ++i)
+        if (vertex_component[i] >= 0)
+          face_vertices_[fill_c[vertex_component[i]]++] = i;
+    }
 
     local_.assign (n, Eigen::Vector3d::Zero ());
     local_stamp_.assign (n, 0);
     face_stamp_.assign (nf, 0);
     stamp_ = 0;
+  }
+
+  void
+  TensorSurfaceGrid::setGrowthMargin (double fraction)
+  {
+    if (!(fraction >= 0.0) || !std::isfinite (fraction))
+      PCL_TENSOR_THROW (BadArgumentException, "[pcl::TensorSurfaceGrid::setGrowthMargin] " << fraction
+                        << " must be non-negative and finite");
+    growth_margin_fraction_ = fraction;
   }
 
   void
@@ -98,7 +144,9 @@ namespace pcl
                         << " must be positive and finite");
     grid_size_ = grid_size;
     bin_size_ = bin_size;
+    inv_bin_size_ = 1.0 / bin_size;
     dense_.assign (static_cast<std::size_t> (grid_size) * grid_size * grid_size, 0.0);
+    touched_bits_.assign ((dense_.size () + 63) / 64, 0);
     touched_.clear ();
   }
 
@@ -113,45 +161,46 @@ namespace pcl
     return local_[v];
   }
 
-  void
-  TensorSurfaceGrid::split (const Polygon& in, int axis, double plane, Polygon& below, Polygon& above)
+  template <int axis> void
+  TensorSurfaceGrid::split (const Polygon& in, double plane, Polygon& below, Polygon& above)
   {
+    // One Sutherland-Hodgman step against the plane u_axis = plane, keeping both sides. The inputs are
+    // convex (a triangle cut by at most six axis-aligned planes), so each side has at most 9 vertices.
     below.n = 0;
     above.n = 0;
-    for (int i = 0; i < in.n; ++i)
+    const int n = in.n;
+    // Rounding could make a nearly degenerate polygon cross the plane more than twice; never write
+    // past the buffers (such a sliver has no measurable area).
+    constexpr int last = Polygon::capacity - 2;
+    const double* prev = in.p[n - 1];
+    double dp = prev[axis] - plane;
+    for (int i = 0; i < n; ++i)
     {
       const double* cur = in.p[i];
-      const double* nxt = in.p[(i + 1) % in.n];
       const double dc = cur[axis] - plane;
-      const double dn = nxt[axis] - plane;
-      if (dc <= 0.0 && below.n < Polygon::capacity)
+      if (below.n > last || above.n > last)
+        break;
+      if ((dp < 0.0 && dc > 0.0) || (dp > 0.0 && dc < 0.0))
       {
-        std::copy (cur, cur + 3, below.p[below.n]);
-        ++below.n;
-      }
-      if (dc >= 0.0 && above.n < Polygon::capacity)
-      {
-        std::copy (cur, cur + 3, above.p[above.n]);
-        ++above.n;
-      }
-      if ((dc < 0.0 && dn > 0.0) || (dc > 0.0 && dn < 0.0))
-      {
-        const double t = dc / (dc - dn);
-        double q[3];
+        const double t = dp / (dp - dc);
+        double* qb = below.p[below.n++];
+        double* qa = above.p[above.n++];
         for (int k = 0; k < 3; ++k)
-          q[k] = cur[k] + t * (nxt[k] - cur[k]);
-        q[axis] = plane;
-        if (below.n < Polygon::capacity)
-        {
-          std::copy (q, q + 3, below.p[below.n]);
-          ++below.n;
-        }
-        if (above.n < Polygon::capacity)
-        {
-          std::copy (q, q + 3, above.p[above.n]);
-          ++above.n;
-        }
+          qb[k] = qa[k] = prev[k] + t * (cur[k] - prev[k]);
+        qb[axis] = qa[axis] = plane;
       }
+      if (dc <= 0.0)
+      {
+        double* q = below.p[below.n++];
+        q[0] = cur[0]; q[1] = cur[1]; q[2] = cur[2];
+      }
+      if (dc >= 0.0)
+      {
+        double* q = above.p[above.n++];
+        q[0] = cur[0]; q[1] = cur[1]; q[2] = cur[2];
+      }
+      prev = cur;
+      dp = dc;
     }
   }
 
@@ -173,13 +222,12 @@ namespace pcl
     const double area = 0.5 * std::abs (sx * current_normal_.x () + sy * current_normal_.y () + sz * current_normal_.z ());
     if (!(area > 0.0))
       return;
-    if (dense_[bin] == 0.0)
-      touched_.push_back (bin);
+    touched_bits_[static_cast<std::size_t> (bin) >> 6] |= std::uint64_t (1) << (bin & 63);
     dense_[bin] += area;
   }
 
-  void
-  TensorSurfaceGrid::sweep (const Polygon& poly, int axis, int flat_prefix)
+  template <int axis> void
+  TensorSurfaceGrid::sweep (const Polygon& poly, int flat_prefix)
   {
     if (poly.n < 3)
       return;
@@ -193,41 +241,45 @@ namespace pcl
     const double half_bins = 0.5 * n;
     if (hi <= -half_extent_ || lo >= half_extent_)
       return;
-    int i0 = static_cast<int> (std::floor (lo / bin_size_ + half_bins));
-    int i1 = static_cast<int> (std::floor (hi / bin_size_ + half_bins));
-    i0 = std::max (i0, 0);
-    i1 = std::min (i1, n - 1);
+    // Bin range; the clamp to [-1, n] keeps the truncating cast a floor.
+    const double x0 = std::min (std::max (lo * inv_bin_size_ + half_bins, -1.0), static_cast<double> (n));
+    const double x1 = std::min (std::max (hi * inv_bin_size_ + half_bins, -1.0), static_cast<double> (n));
+    const int i0 = std::max (static_cast<int> (x0 + 2.0) - 2, 0);
+    const int i1 = std::min (static_cast<int> (x1 + 2.0) - 2, n - 1);
 
-    Polygon rem = poly, below, above;
+    // Cut the polygon slab by slab; the remainder alternates between two buffers (no copies).
+    Polygon buffers[2], below;
+    int next = 0;
+    const Polygon* rem = &poly;
     const double lower_plane = (i0 - half_bins) * bin_size_;
     if (lo < lower_plane)
     {
-      split (rem, axis, lower_plane, below, above);
-      rem = above;
+      split<axis> (*rem, lower_plane, below, buffers[next]);
+      rem = &buffers[next];
+      next ^= 1;
     }
     for (int i = i0; i <= i1; ++i)
     {
       const double plane = (i + 1 - half_bins) * bin_size_;
-      const Polygon* piece = &rem;
-      bool last = (i == i1);
-      if (hi > plane)
+      const Polygon* piece = rem;
+      const bool cut = hi > plane;
+      if (cut)
       {
-        split (rem, axis, plane, below, above);
+        split<axis> (*rem, plane, below, buffers[next]);
         piece = &below;
       }
-      else
-        last = true;
-      if (axis < 2)
-        sweep (*piece, axis + 1, flat_prefix * n + i);
+      if constexpr (axis < 2)
+        sweep<axis + 1> (*piece, flat_prefix * n + i);
       else
         addArea (*piece, flat_prefix * n + i);
-      if (last)
+      if (!cut || i == i1)
         break;
-      rem = above;
+      rem = &buffers[next];
+      next ^= 1;
     }
   }
 
-  void
+  bool
   TensorSurfaceGrid::visitFace (int face)
   {
     ++stats_.faces_visited;
@@ -237,12 +289,15 @@ namespace pcl
     const Eigen::Vector3d& c = localVertex (t[2]);
     const Eigen::Vector3d lo = a.cwiseMin (b).cwiseMin (c);
     const Eigen::Vector3d hi = a.cwiseMax (b).cwiseMax (c);
+    const double g = half_extent_ + growth_margin_;
+    if ((hi.array () <= -g).any () || (lo.array () >= g).any ())
+      return false;  // outside the grid and its guard band: the region stops here
     const double h = half_extent_;
     if ((hi.array () <= -h).any () || (lo.array () >= h).any ())
-      return;
+      return true;   // in the guard band: grow through it, nothing to clip
     ++stats_.faces_clipped;
     if (face_normals_[face].isZero ())
-      return;  // degenerate triangle: no area, but it still connects the region
+      return true;  // degenerate triangle: no area, but it still connects the region
     current_normal_ = frame_ * face_normals_[face];
     Polygon poly;
     poly.n = 3;
@@ -252,7 +307,8 @@ namespace pcl
       poly.p[1][k] = b[k];
       poly.p[2][k] = c[k];
     }
-    sweep (poly, 0, 0);
+    sweep<0> (poly, 0);
+    return true;
   }
 
   void
@@ -266,6 +322,7 @@ namespace pcl
     origin_ = origin;
     frame_ = frame;
     half_extent_ = 0.5 * grid_size_ * bin_size_;
+    growth_margin_ = region_growing_ ? growth_margin_fraction_ * half_extent_ : 0.0;
     stats_ = Stats ();
     if (++stamp_ == 0)
     {
@@ -289,13 +346,37 @@ namespace pcl
           }
         }
       };
-      // Seed: the vertex closest to the origin (Section 2), and the two pair vertices.
-      pcl::Indices nn (1);
-      std::vector<float> nn_dist (1);
-      const pcl::PointXYZ o (static_cast<float> (origin.x ()), static_cast<float> (origin.y ()),
-                             static_cast<float> (origin.z ()));
-      if (seed_tree_.nearestKSearch (o, 1, nn, nn_dist) > 0)
-        push_faces_of (seed_tree_vertices_[nn[0]]);
+      // Seed: the vertex closest to the origin (Section 2), and the two pair vertices. With
+      // seed_every_component_, also the closest vertex of every other component that can reach the
+      // grid: a triangle meets the cube only if each of its vertices lies within its longest edge of a
+      // point of the cube, i.e. within h sqrt(3) + longest edge of the origin.
+      const double cube_radius = (half_extent_ + growth_margin_) * std::sqrt (3.0);
+      int best_vertex = -1;
+      double best_d2 = std::numeric_limits<double>::infinity ();
+      for (int c = 0; c + 1 < static_cast<int> (component_offsets_.size ()); ++c)
+      {
+        int closest = -1;
+        double closest_d2 = std::numeric_limits<double>::infinity ();
+        for (int k = component_offsets_[c]; k < component_offsets_[c + 1]; ++k)
+        {
+          const double d2 = (vertices_[face_vertices_[k]] - origin).squaredNorm ();
+          if (d2 < closest_d2)
+          {
+            closest_d2 = d2;
+            closest = face_vertices_[k];
+          }
+        }
+        if (closest_d2 < best_d2)
+        {
+          best_d2 = closest_d2;
+          best_vertex = closest;
+        }
+        const double reach = cube_radius + component_reach_[c];
+        if (seed_every_component_ && closest_d2 <= reach * reach)
+          push_faces_of (closest);
+      }
+      if (best_vertex >= 0)
+        push_faces_of (best_vertex);
       const int nv = static_cast<int> (vertices_.size ());
       if (seed_a >= 0 && seed_a < nv)
         push_faces_of (seed_a);
@@ -304,10 +385,8 @@ namespace pcl
       for (std::size_t head = 0; head < queue_.size (); ++head)
       {
         const int f = queue_[head];
-        const int clipped_before = stats_.faces_clipped;
-        visitFace (f);
-        if (stats_.faces_clipped == clipped_before)
-          continue;  // completely outside the grid: the region stops here
+        if (!visitFace (f))
+          continue;  // completely outside the grid (and guard band): the region stops here
         for (const int v : faces_[f])
           push_faces_of (v);
       }
@@ -324,7 +403,18 @@ namespace pcl
       }
     }
 
-    std::sort (touched_.begin (), touched_.end ());
+    // Sorted bin order from the bitmap of touched bins (cheaper than sorting them).
+    touched_.clear ();
+    for (std::size_t w = 0; w < touched_bits_.size (); ++w)
+    {
+      std::uint64_t bits = touched_bits_[w];
+      touched_bits_[w] = 0;
+      while (bits)
+      {
+        touched_.push_back (static_cast<int> (w * 64 + static_cast<std::size_t> (__builtin_ctzll (bits))));
+        bits &= bits - 1;
+      }
+    }
     const double min_area = 1e-12 * bin_size_ * bin_size_;
     bin_index.clear ();
     bin_area.clear ();

@@ -11,6 +11,7 @@
 #include <pcl/features/tensor_grid.h>
 #include <pcl/Vertices.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -56,9 +57,18 @@ namespace pcl
     * order_ambiguous = 1 (|z . (p_b - p_a)| < sin(ambiguity angle) |p_b - p_a|) and a matcher should
     * also try flipPairOrder() of one side. One tensor is still produced per pair.
     *
-    * Bins: the exact area of the mesh inside each of the N^3 bins of the grid (see TensorSurfaceGrid),
-    * found by region growing from the vertex closest to the origin (the paper's method) or, with
-    * setRegionGrowing(false), by testing every face.
+    * Bins: the exact area of the mesh inside each of the N^3 bins of the grid (see TensorSurfaceGrid).
+    * By default every face whose bounding sphere and local bounding box meet the grid is clipped
+    * (brute force: exact, and on ~400-face reduced meshes the fastest way). setRegionGrowing(true)
+    * visits faces by the paper's region growing from the vertex closest to the origin instead. The
+    * paper's rule (one seed; stop when the whole frontier is outside the grid) misses surface that
+    * re-enters the grid, which on the ten reduced Stanford bunny scans happens in 40% of the tensors
+    * (4.8% of their area on average), not "very slim[ly]"; so region growing is by default also seeded
+    * in every connected component that can reach the grid and grows through a guard band of twice the
+    * grid's half-extent (setSeedEveryComponent, setGrowthMargin): it then agrees with brute force on
+    * 99.98% of those tensors, but visits more faces and is slower than brute force at 400 faces (it
+    * scales better on large meshes). setSeedEveryComponent(false) and setGrowthMargin(0) give the
+    * paper's rule exactly.
     *
     * Errors: compute() follows PCL: on invalid input it prints PCL_ERROR, returns an empty cloud and
     * records the reason (getLastError()). computeOrThrow() throws instead: pcl::BadArgumentException for
@@ -78,7 +88,8 @@ namespace pcl
       /** \brief Kind of the last error, to choose the exception computeOrThrow() throws. */
       enum class ErrorKind { NONE, BAD_ARGUMENT, INVALID_SCAN };
 
-      /** \brief Empty constructor: the paper's defaults (N = 10, theta_d > 5 degrees, 3 partners). */
+      /** \brief Empty constructor: the paper's defaults (N = 10, theta_d > 5 degrees, 3 partners),
+        * brute-force face visiting (see setRegionGrowing). */
       TensorEstimation () { this->feature_name_ = "TensorEstimation"; }
 
       /** \brief Set the triangles of the mesh, as indices into the input cloud.
@@ -153,11 +164,40 @@ namespace pcl
       /** \brief The order ambiguity angle in degrees (default 5). */
       double getOrderAmbiguityAngle () const { return order_ambiguity_angle_; }
 
-      /** \brief Visit the faces by region growing (true: the paper's method, default) or test every
-        * face (false: slower, never misses surface that re-enters the grid). */
+      /** \brief Visit the faces by region growing (true: the paper's method, Section 2) or test every
+        * face whose bounding sphere meets the grid (false, default: exact, never misses surface that
+        * re-enters the grid, and faster than region growing on ~400-face meshes; see the class notes). */
       void setRegionGrowing (bool region_growing) { region_growing_ = region_growing; }
       /** \brief Whether region growing is used. */
       bool getRegionGrowing () const { return region_growing_; }
+
+      /** \brief Region growing: also seed the closest vertex of every connected component of the mesh
+        * that can reach the grid (true, default), or only the vertex closest to the origin (false: the
+        * paper's single seed, Section 2). Scans split into components at depth discontinuities.
+        * See TensorSurfaceGrid::setSeedEveryComponent. */
+      void setSeedEveryComponent (bool every) { seed_every_component_ = every; }
+      /** \brief Whether every component that can reach the grid is seeded. */
+      bool getSeedEveryComponent () const { return seed_every_component_; }
+
+      /** \brief Region growing: continue through faces outside the grid within a guard band of
+        * \a fraction times the grid's half-extent (default 2; 0: the paper's rule, which on the reduced
+        * Stanford bunny scans misses surface in 40% of the tensors). See TensorSurfaceGrid::setGrowthMargin.
+        * \throw pcl::BadArgumentException when negative */
+      void setGrowthMargin (double fraction)
+      {
+        if (!(fraction >= 0.0) || !std::isfinite (fraction))
+          PCL_TENSOR_THROW (BadArgumentException, "[pcl::TensorEstimation::setGrowthMargin] " << fraction
+                            << " must be non-negative and finite");
+        growth_margin_ = fraction;
+      }
+      /** \brief The guard band as a fraction of the grid's half-extent. */
+      double getGrowthMargin () const { return growth_margin_; }
+
+      /** \brief Faces whose local bounding box was tested, summed over the tensors of the last
+        * compute() (the cost of face visiting: region growing against brute force). */
+      std::size_t getFacesVisited () const { return faces_visited_; }
+      /** \brief Faces that met a grid and were clipped, summed over the tensors of the last compute(). */
+      std::size_t getFacesClipped () const { return faces_clipped_; }
 
       /** \brief Like compute(), but throw pcl::BadArgumentException or pcl::InvalidScanException
         * with the reason when the input is invalid, instead of returning an empty cloud.
@@ -190,8 +230,12 @@ namespace pcl
       int partners_per_vertex_{3};
       TensorPairing pairing_{TensorPairing::EITHER};
       double order_ambiguity_angle_{5.0};
-      bool region_growing_{true};
+      bool region_growing_{false};
+      bool seed_every_component_{true};
+      double growth_margin_{2.0};
 
+      std::size_t faces_visited_{0};
+      std::size_t faces_clipped_{0};
       ErrorKind error_kind_{ErrorKind::NONE};
       std::string error_message_;
       std::vector<Eigen::Vector3d> vertices_;   // validated copies of the input, in double

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <pcl/features/tensor_descriptor.h>
-#include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/memory.h>
 #include <pcl/point_types.h>
 #include <pcl/Vertices.h>
@@ -27,8 +26,9 @@ namespace pcl
     *
     * Faces are visited either by the paper's region growing (start from the faces around the vertex
     * closest to the origin, and around the two pair vertices, and grow over shared vertices from every
-    * face that meets the grid, stopping when the whole frontier lies outside) or by brute force (every
-    * face whose bounding sphere and then local bounding box meet the grid).
+    * face that meets the grid, stopping when the whole frontier lies outside; by default also from the
+    * closest vertex of every other connected component that can reach the grid) or by brute force
+    * (every face whose bounding sphere and then local bounding box meet the grid).
     *
     * Not thread-safe: one instance holds scratch buffers. Construct one per thread.
     * \ingroup features
@@ -56,7 +56,7 @@ namespace pcl
       void
       setMesh (const std::vector<Eigen::Vector3d>& vertices, const std::vector<pcl::Vertices>& polygons);
 
-      /** \brief Number of triangles of the mesh. */
+      /** \brief Number of triangles of the mesh (0 before setMesh). */
       std::size_t getNumFaces () const { return faces_.size (); }
 
       /** \brief Area of the mesh (sum of its triangles). */
@@ -73,10 +73,34 @@ namespace pcl
       /** \brief Bin size b_s. */
       double getBinSize () const { return bin_size_; }
 
-      /** \brief Visit faces by region growing (true, the paper's method) or by brute force (false). */
+      /** \brief Visit faces by region growing (true, the paper's method) or by brute force (false, default). */
       void setRegionGrowing (bool region_growing) { region_growing_ = region_growing; }
       /** \brief Whether faces are visited by region growing. */
       bool getRegionGrowing () const { return region_growing_; }
+
+      /** \brief Seed region growing in every connected component of the mesh that can reach the grid
+        * (true, default), not only in the component of the vertex closest to the origin (false: the
+        * paper's single seed). A range scan falls apart into components at depth discontinuities
+        * (an ear in front of the head), and a grid often spans several of them; surface that leaves the
+        * grid and re-enters it within one component is still missed.
+        */
+      void setSeedEveryComponent (bool every) { seed_every_component_ = every; }
+      /** \brief Whether every component that can reach the grid is seeded. */
+      bool getSeedEveryComponent () const { return seed_every_component_; }
+
+      /** \brief Let region growing continue through faces outside the grid but within a guard band of
+        * \a fraction times the grid's half-extent around it (default 2; 0: the paper's rule, stop as
+        * soon as the whole frontier is outside the grid). Catches surface that leaves the grid and
+        * re-enters it: on the ten reduced Stanford bunny scans, region growing with every component
+        * seeded agrees with brute force on 79.5% of the tensors with no guard band, 99.4% with 1 and
+        * 99.98% with 2 (test_tensor, RegionGrowingAgreesWithBruteForceOnBunnyScans).
+        * \throw pcl::BadArgumentException when negative */
+      void setGrowthMargin (double fraction);
+      /** \brief The guard band, as a fraction of the grid's half-extent. */
+      double getGrowthMargin () const { return growth_margin_fraction_; }
+
+      /** \brief Number of connected components (over shared vertices) of the mesh's faces. */
+      int getNumComponents () const { return static_cast<int> (component_reach_.size ()); }
 
       /** \brief Compute the sparse bins of the grid centred at \a origin with axes \a frame (rows).
         * \param[in] origin grid centre in mesh coordinates
@@ -96,14 +120,14 @@ namespace pcl
     private:
       struct Polygon
       {
-        static constexpr int capacity = 16;
+        static constexpr int capacity = 12;  // a triangle cut by six axis-aligned planes has at most 9 vertices
         double p[capacity][3];
         int n = 0;
       };
 
-      void visitFace (int face);
-      void sweep (const Polygon& poly, int axis, int flat_prefix);
-      static void split (const Polygon& in, int axis, double plane, Polygon& below, Polygon& above);
+      bool visitFace (int face);
+      template <int Axis> void sweep (const Polygon& poly, int flat_prefix);
+      template <int Axis> static void split (const Polygon& in, double plane, Polygon& below, Polygon& above);
       void addArea (const Polygon& poly, int bin);
       const Eigen::Vector3d& localVertex (int v);
 
@@ -115,14 +139,19 @@ namespace pcl
       std::vector<double> face_radii_;                 // bounding sphere radii
       std::vector<int> vertex_face_offsets_;           // CSR: faces around each vertex
       std::vector<int> vertex_faces_;
-      pcl::KdTreeFLANN<pcl::PointXYZ> seed_tree_;      // vertices that lie on a face
-      std::vector<int> seed_tree_vertices_;
+      std::vector<int> face_vertices_;                 // vertices that lie on a face, grouped by component
+      std::vector<int> component_offsets_;             // CSR: component c owns face_vertices_[offsets[c] .. offsets[c+1])
+      std::vector<double> component_reach_;            // longest edge of the component's faces
       double mesh_area_{0.0};
 
       // Grid.
       int grid_size_{TENSOR_DEFAULT_GRID_SIZE};
       double bin_size_{0.0};
-      bool region_growing_{true};
+      double inv_bin_size_{0.0};
+      bool region_growing_{false};
+      bool seed_every_component_{true};
+      double growth_margin_fraction_{2.0};
+      double growth_margin_{0.0};
 
       // Scratch of the current tensor.
       Eigen::Vector3d origin_{Eigen::Vector3d::Zero ()};
@@ -130,7 +159,8 @@ namespace pcl
       double half_extent_{0.0};
       Eigen::Vector3d current_normal_{Eigen::Vector3d::Zero ()};
       std::vector<double> dense_;                       // N^3 accumulator, zero between calls
-      std::vector<int> touched_;                        // bins made non-zero in this call
+      std::vector<int> touched_;                        // bins made non-zero in this call, sorted
+      std::vector<std::uint64_t> touched_bits_;         // bitmap of the same bins while accumulating
       std::vector<Eigen::Vector3d> local_;              // local coordinates, valid when stamp matches
       std::vector<std::uint32_t> local_stamp_;
       std::vector<std::uint32_t> face_stamp_;

@@ -177,13 +177,15 @@ pcl::TensorEstimation<PointInT, PointNT, PointOutT>::initCompute ()
   }
   catch (const InvalidScanException& e)
   {
-    return fail (ErrorKind::INVALID_SCAN, e.detailedMessage (), true);
+    return fail (ErrorKind::INVALID_SCAN, errorDescription (e), true);
   }
   catch (const BadArgumentException& e)
   {
-    return fail (ErrorKind::BAD_ARGUMENT, e.detailedMessage (), true);
+    return fail (ErrorKind::BAD_ARGUMENT, errorDescription (e), true);
   }
   grid_.setRegionGrowing (region_growing_);
+  grid_.setSeedEveryComponent (seed_every_component_);
+  grid_.setGrowthMargin (growth_margin_);
   return true;
 }
 
@@ -262,6 +264,8 @@ pcl::TensorEstimation<PointInT, PointNT, PointOutT>::computeFeature (PointCloudO
   const double sin_ambiguity = std::sin (order_ambiguity_angle_ / rad2deg);
   output.clear ();
   output.reserve (pairs.size ());
+  faces_visited_ = 0;
+  faces_clipped_ = 0;
   for (const auto& pr : pairs)
   {
     int a = pr.first, b = pr.second;
@@ -295,6 +299,8 @@ pcl::TensorEstimation<PointInT, PointNT, PointOutT>::computeFeature (PointCloudO
     t.grid_size = grid_size_;
     t.order_ambiguous = std::abs (elevation) < sin_ambiguity * d.norm () ? 1u : 0u;
     grid_.computeBins (origin, frame, a, b, t.bin_index, t.bin_area);
+    faces_visited_ += static_cast<std::size_t> (grid_.getStats ().faces_visited);
+    faces_clipped_ += static_cast<std::size_t> (grid_.getStats ().faces_clipped);
     output.emplace_back (std::move (t));
   }
   output.width = static_cast<std::uint32_t> (output.size ());
