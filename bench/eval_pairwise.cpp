@@ -8,6 +8,7 @@
  */
 #include "eval/eval_views.h"
 #include "eval/fpfh_baseline.h"
+#include "eval/match_diagnosis.h"
 #include "eval/pair_evaluation.h"
 #include "eval/pair_summary.h"
 
@@ -19,6 +20,7 @@
 #include <pcl/simulation/example_object.h>
 #include <pcl/simulation/view_set.h>
 
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -55,6 +57,9 @@ namespace
                  "  --baseline           FPFH + SampleConsensusPrerejective + ICP on the same pairs -> real_fpfh.csv\n"
                  "  --synthetic          26 synthetic views of bun_zipper.ply and of the example object, adjacent\n"
                  "                       pairs (30 deg) -> synthetic_bunny.csv, synthetic_example.csv\n"
+                 "  --diagnose           with --real: score every tensor match's hypothesis against the ground truth\n"
+                 "                       and verify it, to tell matching failures from verification failures\n"
+                 "                       -> real_diagnosis.csv\n"
                  "  --speed              pcl_tensor_register bun000 bun045 wall time, in-process registration time and\n"
                  "                       the baseline on the same pair -> speed.csv\n"
                  "  --out DIR            where the CSVs go (default %s)\n"
@@ -167,8 +172,38 @@ namespace
     return results;
   }
 
+  /** Matching or verification: where the tensor method loses each pair. */
   void
-  runReal (const Options& o, bool tensor, bool baseline)
+  runDiagnosis (const EvalViews& views, const pcl::ObjectDimensions& dims, const std::vector<std::pair<int, int>>& pairs,
+                const Options& o)
+  {
+    std::vector<MatchDiagnosis> rows;
+    std::array<std::size_t, 5> stages{};
+    int with_good = 0, good_all_rejected = 0;
+    std::size_t bad_passed = 0;
+    for (const auto& [m, s] : pairs)
+    {
+      MatchDiagnosis d = diagnoseMatches (views[m], views[s], dims, o.params);
+      d.overlap = pairOverlap (views[m], views[s]);
+      with_good += d.good > 0;
+      good_all_rejected += d.good > 0 && d.good_stage[0] == 0;
+      bad_passed += d.bad_passed;
+      for (std::size_t k = 0; k < stages.size (); ++k)
+        stages[k] += d.good_stage[k];
+      rows.push_back (d);
+    }
+    writeDiagnosisCsv (o.out + "/real_diagnosis.csv", rows);
+    std::printf ("\n== diagnosis of the tensor matches (good hypothesis: within %g deg and %g d_res)\n",
+                 kGoodHypothesisRotationDeg, kGoodHypothesisTranslationResolutions);
+    std::printf ("  pairs with at least one good hypothesis %d of %zu; of these, every good one rejected: %d\n", with_good,
+                 pairs.size (), good_all_rejected);
+    std::printf ("  good hypotheses: passed %zu, failed coarse dimensions %zu, coarse overlap %zu, fine overlap %zu, "
+                 "fine dimensions %zu\n", stages[0], stages[1], stages[2], stages[3], stages[4]);
+    std::printf ("  bad hypotheses that passed verification and stayed wrong after ICP: %zu\n", bad_passed);
+  }
+
+  void
+  runReal (const Options& o, bool tensor, bool baseline, bool diagnose)
   {
     std::printf ("Loading and preparing the bunny scans of %s\n", bunnyConf (o).c_str ());
     EvalViews views = loadStanfordViews (bunnyConf (o));
@@ -182,6 +217,8 @@ namespace
       writePairCsv (o.out + "/real_tensor.csv", results);
       printPairSummary ("real bunny pairs, tensor method", results);
     }
+    if (diagnose)
+      runDiagnosis (views, dims, pairs, o);
     if (baseline)
     {
       std::printf ("\nFPFH + SampleConsensusPrerejective + ICP (leaf %.2f d_res):\n", o.baseline.leaf_resolutions);
@@ -292,8 +329,9 @@ namespace
     std::filesystem::create_directories (o.out);
     const bool real = pcl::console::find_switch (argc, argv, "--real");
     const bool baseline = pcl::console::find_switch (argc, argv, "--baseline");
-    if (real || baseline)
-      runReal (o, real, baseline);
+    const bool diagnose = pcl::console::find_switch (argc, argv, "--diagnose");
+    if (real || baseline || diagnose)
+      runReal (o, real, baseline, diagnose);
     if (pcl::console::find_switch (argc, argv, "--synthetic"))
       runSynthetic (o);
     if (pcl::console::find_switch (argc, argv, "--speed"))
