@@ -3,6 +3,7 @@
  */
 #include "pair_evaluation.h"
 
+#include <pcl/common/centroid.h>
 #include <pcl/common/io.h>
 #include <pcl/common/time.h>
 
@@ -45,7 +46,9 @@ namespace pcl_tensor_eval
     result.resolution = pairResolution (model, scene);
     result.registered = registered;
     result.correct = false;
-    result.rotation_error_deg = result.translation_error_res = std::numeric_limits<double>::quiet_NaN ();
+    result.correct_at_centroid = false;
+    result.rotation_error_deg = result.translation_error_res = result.centroid_error_res =
+        std::numeric_limits<double>::quiet_NaN ();
     if (!registered)
       return;
     const Eigen::Affine3d estimate (transform.cast<double> ());
@@ -53,6 +56,12 @@ namespace pcl_tensor_eval
     result.rotation_error_deg = e.rotation_deg;
     result.translation_error_res = e.translation_resolutions;
     result.correct = e.rotation_deg <= kMaxRotationErrorDeg && e.translation_resolutions <= kMaxTranslationErrorResolutions;
+    Eigen::Vector4d centroid = Eigen::Vector4d::Zero ();
+    pcl::compute3DCentroid (*scene.prepared->fine.cloud, centroid);
+    const Eigen::Vector3d c = centroid.head<3> ();
+    result.centroid_error_res = (estimate * c - groundTruth (model, scene) * c).norm () / result.resolution;
+    result.correct_at_centroid =
+        e.rotation_deg <= kMaxRotationErrorDeg && result.centroid_error_res <= kMaxTranslationErrorResolutions;
   }
 
   PairResult

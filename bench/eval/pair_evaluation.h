@@ -26,6 +26,12 @@ namespace pcl_tensor_eval
     bool correct = false;     ///< registered, and both errors within the bounds
     /** Errors of the reported transform (Eq. 11 and Eq. 12); NaN when not registered. */
     double rotation_error_deg = 0.0, translation_error_res = 0.0;
+    /** How far the scene's centroid lands from where the ground truth puts it, in d_res; NaN when not
+      * registered. Unlike Eq. 12 it does not depend on where the view frames' origins are: a synthetic
+      * sensor frame's origin is ~0.3 m from the object, so there Eq. 12 grows by ~5 d_res per degree. */
+    double centroid_error_res = 0.0;
+    /** Registered, rotation error within the bound, and centroid error within the translation bound. */
+    bool correct_at_centroid = false;
     std::size_t hypotheses = 0, matches = 0;
     std::array<std::size_t, 5> failures{};  ///< tensor method: failures per verification stage
     double time_ms = 0.0;

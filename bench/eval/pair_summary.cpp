@@ -20,7 +20,7 @@ namespace pcl_tensor_eval
     if (!out)
       throw std::runtime_error ("cannot write " + path);
     out << "model,scene,overlap,resolution,registered,correct,wrong,rotation_error_deg,translation_error_res,"
-           "hypotheses,matches,fail_coarse_dimensions,fail_coarse_overlap,fail_fine_overlap,fail_fine_dimensions,time_ms\n";
+           "centroid_error_res,correct_at_centroid,hypotheses,matches,fail_coarse_dimensions,fail_coarse_overlap,fail_fine_overlap,fail_fine_dimensions,time_ms\n";
     out << std::setprecision (6);
     for (const PairResult& r : results)
     {
@@ -28,9 +28,10 @@ namespace pcl_tensor_eval
           << r.correct << ',' << r.wrong () << ',';
       // Empty cells, not "nan", when no transform was reported: spreadsheets read them as missing.
       if (r.registered)
-        out << r.rotation_error_deg << ',' << r.translation_error_res << ',';
+        out << r.rotation_error_deg << ',' << r.translation_error_res << ',' << r.centroid_error_res << ',';
       else
-        out << ",,";
+        out << ",,,";
+      out << r.correct_at_centroid << ',';
       out << r.hypotheses << ',' << r.matches;
       for (std::size_t k = 1; k < r.failures.size (); ++k)
         out << ',' << r.failures[k];
@@ -85,11 +86,12 @@ namespace pcl_tensor_eval
       std::printf ("\n== %s: no pairs\n", title.c_str ());
       return;
     }
-    int correct = 0, wrong = 0;
+    int correct = 0, wrong = 0, correct_at_centroid = 0;
     for (const PairResult& r : results)
     {
       correct += r.correct;
       wrong += r.wrong ();
+      correct_at_centroid += r.correct_at_centroid;
     }
     const double nan = std::nan ("");
     std::printf ("\n== %s: %zu pairs, correct %d (%.1f%%), WRONG registrations reported: %d\n", title.c_str (),
@@ -98,9 +100,11 @@ namespace pcl_tensor_eval
     printBand (results, "0.3-0.5", 0.3, 0.5);
     printBand (results, "0.1-0.3", 0.1, 0.3);
     printBand (results, "< 0.1", -1.0, 0.1);
-    std::printf ("  median over correct pairs: rotation error %.4f deg, translation error %.4f d_res\n",
+    std::printf ("  median over correct pairs: rotation error %.4f deg, translation error %.4f d_res (at the centroid %.4f d_res)\n",
                  medianOf (results, [&] (const PairResult& r) { return r.correct ? r.rotation_error_deg : nan; }),
-                 medianOf (results, [&] (const PairResult& r) { return r.correct ? r.translation_error_res : nan; }));
+                 medianOf (results, [&] (const PairResult& r) { return r.correct ? r.translation_error_res : nan; }),
+                 medianOf (results, [&] (const PairResult& r) { return r.correct ? r.centroid_error_res : nan; }));
+    std::printf ("  correct with the translation error taken at the scene's centroid: %d\n", correct_at_centroid);
     std::printf ("  median time per pair %.1f ms (max %.1f ms)\n", medianOf (results, [] (const PairResult& r) { return r.time_ms; }),
                  std::max_element (results.begin (), results.end (), [] (const PairResult& a, const PairResult& b) {
                    return a.time_ms < b.time_ms; })->time_ms);
