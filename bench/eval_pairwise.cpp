@@ -59,7 +59,7 @@ namespace
                  "  --baseline           FPFH + SampleConsensusPrerejective + ICP on the same pairs -> real_fpfh.csv\n"
                  "  --synthetic          26 synthetic views of bun_zipper.ply and of the example object, adjacent\n"
                  "                       pairs (30 deg) -> synthetic_bunny.csv, synthetic_example.csv\n"
-                 "  --diagnose           with --real: score every tensor match's hypothesis against the ground truth\n"
+                 "  --diagnose           on the real pairs: score every tensor match's hypothesis against the ground truth\n"
                  "                       and verify it, to tell matching failures from verification failures\n"
                  "                       -> real_diagnosis.csv\n"
                  "  --speed              pcl_tensor_register bun000 bun045 wall time, in-process registration time and\n"
@@ -68,11 +68,14 @@ namespace
                  "  --data DIR           third-party data (default %s)\n"
                  "  --app PATH           pcl_tensor_register binary (default %s)\n"
                  "  --max-hypotheses N   tensor method: give up after N hypotheses, 0 = all (default %d)\n"
+                 "  --tr T, --tc T       tensor method: t_r (Eq. 5) and t_c (Eq. 6) (default %g, %g)\n"
+                 "  --faces N            tensor method: faces per reduced mesh (default %d)\n"
                  "  --camera W,H         synthetic camera size in pixels (default %d,%d; fov %g deg)\n"
                  "  --leaf-res F         baseline voxel leaf in d_res (default %g)\n"
                  "  --max-pairs N        evaluate only the first N pairs of each set, 0 = all (default 0)\n"
                  "  --runs N             repetitions for --speed (default %d)\n",
-                 name, d.out.c_str (), d.data.c_str (), d.app.c_str (), d.params.max_hypotheses, d.camera.width,
+                 name, d.out.c_str (), d.data.c_str (), d.app.c_str (), d.params.max_hypotheses, d.params.overlap_threshold,
+                 d.params.correlation_threshold, d.params.preparation.target_faces, d.camera.width,
                  d.camera.height, d.camera.fov_deg, d.baseline.leaf_resolutions, d.runs);
   }
 
@@ -85,6 +88,9 @@ namespace
     parse_argument (argc, argv, "--data", o.data);
     parse_argument (argc, argv, "--app", o.app);
     parse_argument (argc, argv, "--max-hypotheses", o.params.max_hypotheses);
+    parse_argument (argc, argv, "--tr", o.params.overlap_threshold);
+    parse_argument (argc, argv, "--tc", o.params.correlation_threshold);
+    parse_argument (argc, argv, "--faces", o.params.preparation.target_faces);
     parse_argument (argc, argv, "--leaf-res", o.baseline.leaf_resolutions);
     parse_argument (argc, argv, "--max-pairs", o.max_pairs);
     parse_argument (argc, argv, "--runs", o.runs);
