@@ -42,8 +42,8 @@ namespace
     std::string app = PCL_TENSOR_REGISTER_APP;
     pcl::registration::TensorRegistrationParams params;
     FpfhBaselineParams baseline;
-    /** Synthetic camera; its default 400 x 400 (fov 40 deg) gives bunny views of about 30,000-48,000
-      * points, as many as the real scans (31,000-40,000). */
+    /** Synthetic camera; its default 400 x 400 (fov 40 deg) gives bunny views of 29,000-49,000 points
+      * (median 40,000), about as many as the real scans (30,000-40,000, median 36,000). */
     pcl::RangeCameraParams camera;
     int max_pairs = 0;  ///< 0: all pairs
     int runs = 5;       ///< repetitions of the --speed measurements
