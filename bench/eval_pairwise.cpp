@@ -126,7 +126,6 @@ namespace
     for (const EvalView& v : views)
       std::printf ("  %-10s %6zu points, d_res %.6f, %4zu tensors, prepare %.0f ms, tensors %.0f ms\n", v.name.c_str (),
                    v.finite_points, v.prepared->resolution, v.tensors->size (), v.prepare_ms, v.tensors_ms);
-    std::fflush (stdout);
   }
 
   /** Register every pair with the tensor method; \a overlaps are filled in on first use. */
@@ -143,7 +142,6 @@ namespace
                    r.model.c_str (), r.scene.c_str (), r.overlap,
                    r.correct ? "correct" : r.registered ? "WRONG" : "not registered", r.rotation_error_deg,
                    r.translation_error_res, r.hypotheses, r.matches, r.time_ms);
-      std::fflush (stdout);
       results.push_back (r);
     }
     return results;
@@ -174,7 +172,6 @@ namespace
                    r.model.c_str (), r.scene.c_str (), r.overlap,
                    r.correct ? "correct" : r.registered ? "WRONG" : "not registered", r.rotation_error_deg,
                    r.translation_error_res, f.inliers, r.time_ms);
-      std::fflush (stdout);
       results.push_back (r);
     }
     return results;
@@ -259,41 +256,38 @@ namespace
     runSyntheticSet ("example", pcl::makeExampleObject (), o);
   }
 
-  /** Wall time of one run of a shell command, in ms. */
-  double
-  wallTimeMs (const std::string& command, int& status)
+  /** Repeated timings of one method on one pair, and whether it registered the pair. */
+  struct TimedRuns
   {
-    const auto start = std::chrono::steady_clock::now ();
-    status = std::system (command.c_str ());
-    return std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now () - start).count ();
-  }
+    std::vector<double> ms;
+    bool registered = false;
+  };
 
-  void
-  runSpeed (const Options& o)
+  /** The whole pcl_tensor_register process, as a user runs it (loading, registration, output). */
+  TimedRuns
+  timeApp (const std::string& model_path, const std::string& scene_path, const Options& o, std::ofstream& csv)
   {
-    const std::string dir = o.data + "/stanford/bunny/";
-    const std::string model_path = dir + "bun000.ply", scene_path = dir + "bun045.ply";
-    std::ofstream csv (o.out + "/speed.csv");
-    csv << "measure,run,ms,registered\n";
-    std::vector<double> app, tensor, fpfh;
-
-    // 1. The whole process, as a user runs it (loading, registration, output).
+    TimedRuns t;
     const std::string command = "'" + o.app + "' '" + model_path + "' '" + scene_path + "' > /dev/null 2>&1";
-    int app_exit = -1;
     for (int i = 0; i < o.runs; ++i)
     {
-      int status = 0;
-      app.push_back (wallTimeMs (command, status));
-      app_exit = WIFEXITED (status) ? WEXITSTATUS (status) : -1;
+      const auto start = std::chrono::steady_clock::now ();
+      const int status = std::system (command.c_str ());
+      t.ms.push_back (std::chrono::duration<double, std::milli> (std::chrono::steady_clock::now () - start).count ());
       // The app's exit codes: 0 registered, 3 not registered, 2 bad input.
-      csv << "app_wall," << i << ',' << app.back () << ',' << (app_exit == 0) << '\n';
-      std::printf ("  app run %d: %.0f ms (exit code %d)\n", i, app.back (), app_exit);
+      const int exit_code = WIFEXITED (status) ? WEXITSTATUS (status) : -1;
+      t.registered = exit_code == 0;
+      csv << "app_wall," << i << ',' << t.ms.back () << ',' << t.registered << '\n';
+      std::printf ("  app run %d: %.0f ms (exit code %d)\n", i, t.ms.back (), exit_code);
     }
+    return t;
+  }
 
-    // 2. The registration after loading, as the app does it (D from the two views).
-    const pcl::io::RangeScan model = pcl::io::loadRangeScan (model_path);
-    const pcl::io::RangeScan scene = pcl::io::loadRangeScan (scene_path);
-    bool registered = false;
+  /** The registration after loading, as the app does it (D from the two views): timings.total_ms. */
+  TimedRuns
+  timeTensor (const pcl::io::RangeScan& model, const pcl::io::RangeScan& scene, const Options& o, std::ofstream& csv)
+  {
+    TimedRuns t;
     for (int i = 0; i < o.runs; ++i)
     {
       pcl::registration::TensorRegistration reg;
@@ -304,37 +298,57 @@ namespace
       reg.setSourceViewpoint (scene.viewpoint);
       pcl::PointCloud<pcl::PointXYZ> aligned;
       reg.align (aligned);
-      registered = reg.getReport ().registered;
-      tensor.push_back (reg.getReport ().timings.total_ms);
-      csv << "tensor_registration," << i << ',' << tensor.back () << ',' << registered << '\n';
-      std::printf ("  tensor registration run %d: %.0f ms (%s)\n", i, tensor.back (), registered ? "registered" : "not registered");
+      t.registered = reg.getReport ().registered;
+      t.ms.push_back (reg.getReport ().timings.total_ms);
+      csv << "tensor_registration," << i << ',' << t.ms.back () << ',' << t.registered << '\n';
+      std::printf ("  tensor registration run %d: %.0f ms (%s)\n", i, t.ms.back (), t.registered ? "registered" : "not registered");
     }
+    return t;
+  }
 
-    // 3. The baseline on the same pair, from the loaded clouds: features of both views, SAC, ICP.
+  /** The baseline from the loaded clouds: features of both views, SAC, ICP. */
+  TimedRuns
+  timeFpfh (const pcl::io::RangeScan& model, const pcl::io::RangeScan& scene, const Options& o, std::ofstream& csv)
+  {
     // The leaf needs d_res; it is taken from the prepared scans outside the timing, as the tutorial's
     // leaf is a constant chosen once for the sensor.
     const double model_res = pcl::prepareScan (*model.cloud, model.viewpoint, o.params.preparation).resolution;
     const double scene_res = pcl::prepareScan (*scene.cloud, scene.viewpoint, o.params.preparation).resolution;
-    bool fpfh_registered = false;
+    TimedRuns t;
     for (int i = 0; i < o.runs; ++i)
     {
       const FpfhView m = computeFpfhView (*model.cloud, model.viewpoint, model_res, o.baseline);
       const FpfhView s = computeFpfhView (*scene.cloud, scene.viewpoint, scene_res, o.baseline);
       const FpfhResult f = registerFpfh (m, s, 0.5 * (model_res + scene_res), o.baseline, o.params.verification);
-      fpfh.push_back (m.time_ms + s.time_ms + f.sac_ms + f.icp_ms);
-      fpfh_registered = f.registered;
-      csv << "fpfh_registration," << i << ',' << fpfh.back () << ',' << f.registered << '\n';
-      std::printf ("  FPFH run %d: %.0f ms (features %.0f + %.0f, SAC %.0f, ICP %.0f; %s)\n", i, fpfh.back (), m.time_ms,
+      t.ms.push_back (m.time_ms + s.time_ms + f.sac_ms + f.icp_ms);
+      t.registered = f.registered;
+      csv << "fpfh_registration," << i << ',' << t.ms.back () << ',' << f.registered << '\n';
+      std::printf ("  FPFH run %d: %.0f ms (features %.0f + %.0f, SAC %.0f, ICP %.0f; %s)\n", i, t.ms.back (), m.time_ms,
                    s.time_ms, f.sac_ms, f.icp_ms, f.registered ? "registered" : "not registered");
     }
-    std::fflush (stdout);
+    return t;
+  }
+
+  void
+  runSpeed (const Options& o)
+  {
+    const std::string dir = o.data + "/stanford/bunny/";
+    const std::string model_path = dir + "bun000.ply", scene_path = dir + "bun045.ply";
+    std::ofstream csv (o.out + "/speed.csv");
+    csv << "measure,run,ms,registered\n";
+    const TimedRuns app = timeApp (model_path, scene_path, o, csv);
+    const pcl::io::RangeScan model = pcl::io::loadRangeScan (model_path);
+    const pcl::io::RangeScan scene = pcl::io::loadRangeScan (scene_path);
+    const TimedRuns tensor = timeTensor (model, scene, o, csv);
+    const TimedRuns fpfh = timeFpfh (model, scene, o, csv);
+
     std::printf ("\n== speed, bun000 <- bun045, median of %d runs\n", o.runs);
     // A method that gives up is fast for a reason: say so next to its time.
-    const auto outcome = [] (bool ok) { return ok ? "registered" : "NOT registered"; };
-    std::printf ("  pcl_tensor_register process wall time   %8.0f ms  (%s)\n", median (app), outcome (app_exit == 0));
-    std::printf ("  tensor registration after loading       %8.0f ms  (%s)\n", median (tensor), outcome (registered));
-    std::printf ("  FPFH + SAC-prerejective + ICP            %8.0f ms  (%s)\n", median (fpfh), outcome (fpfh_registered));
-    std::printf ("  ratio FPFH / tensor registration         %8.2f\n", median (fpfh) / median (tensor));
+    const auto outcome = [] (const TimedRuns& t) { return t.registered ? "registered" : "NOT registered"; };
+    std::printf ("  pcl_tensor_register process wall time   %8.0f ms  (%s)\n", median (app.ms), outcome (app));
+    std::printf ("  tensor registration after loading       %8.0f ms  (%s)\n", median (tensor.ms), outcome (tensor));
+    std::printf ("  FPFH + SAC-prerejective + ICP            %8.0f ms  (%s)\n", median (fpfh.ms), outcome (fpfh));
+    std::printf ("  ratio FPFH / tensor registration         %8.2f\n", median (fpfh.ms) / median (tensor.ms));
   }
 
   int
@@ -363,6 +377,8 @@ main (int argc, char** argv)
     printHelp (argv[0]);
     return argc < 2 ? 2 : 0;
   }
+  // Line-buffered even into a file: long runs are followed with tail -f.
+  std::setvbuf (stdout, nullptr, _IOLBF, 0);
   try
   {
     return run (argc, argv);
