@@ -45,6 +45,7 @@ namespace
     /** Synthetic camera; its default 400 x 400 (fov 40 deg) gives bunny views of 29,000-49,000 points
       * (median 40,000), about as many as the real scans (30,000-40,000, median 36,000). */
     pcl::RangeCameraParams camera;
+    double noise = 0.0; ///< synthetic views: Gaussian noise along the viewing direction, sigma in d_res
     int max_pairs = 0;  ///< 0: all pairs
     int runs = 5;       ///< repetitions of the --speed measurements
   };
@@ -71,6 +72,7 @@ namespace
                  "  --tr T, --tc T       tensor method: t_r (Eq. 5) and t_c (Eq. 6) (default %g, %g)\n"
                  "  --faces N            tensor method: faces per reduced mesh (default %d)\n"
                  "  --camera W,H         synthetic camera size in pixels (default %d,%d; fov %g deg)\n"
+                 "  --noise S            synthetic views: noise sigma along the viewing direction, in d_res (default 0)\n"
                  "  --leaf-res F         baseline voxel leaf in d_res (default %g)\n"
                  "  --max-pairs N        evaluate only the first N pairs of each set, 0 = all (default 0)\n"
                  "  --runs N             repetitions for --speed (default %d)\n",
@@ -93,6 +95,7 @@ namespace
     parse_argument (argc, argv, "--faces", o.params.preparation.target_faces);
     parse_argument (argc, argv, "--leaf-res", o.baseline.leaf_resolutions);
     parse_argument (argc, argv, "--max-pairs", o.max_pairs);
+    parse_argument (argc, argv, "--noise", o.noise);
     parse_argument (argc, argv, "--runs", o.runs);
     std::vector<int> size;
     if (pcl::console::parse_x_arguments (argc, argv, "--camera", size) > 0)
@@ -238,8 +241,9 @@ namespace
   {
     pcl::SyntheticViewParams view_params;
     view_params.camera = o.camera;
-    std::printf ("\nSynthetic views of %s (camera %dx%d, fov %g deg, noise-free)\n", label.c_str (), o.camera.width,
-                 o.camera.height, o.camera.fov_deg);
+    view_params.noise_sigma_resolutions = o.noise;
+    std::printf ("\nSynthetic views of %s (camera %dx%d, fov %g deg, noise sigma %g d_res)\n", label.c_str (), o.camera.width,
+                 o.camera.height, o.camera.fov_deg, o.noise);
     EvalViews views = makeSyntheticViews (mesh, view_params);
     const pcl::ObjectDimensions dims = prepareViews (views, o.params);
     printViews (views, dims);
