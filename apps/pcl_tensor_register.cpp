@@ -153,7 +153,7 @@ namespace
     }
 
     pcl::PointCloud<pcl::PointXYZ> aligned;
-    registration.align (aligned);
+    registration.alignOrThrow (aligned);
     const auto& report = registration.getReport ();
     if (json)
       std::cout << jsonReport (report, load_ms) << std::endl;

@@ -1,3 +1,5 @@
+#include "test_utils.h"
+
 #include <pcl/common/object_dimensions.h>
 #include <pcl/common/tensor_exceptions.h>
 
@@ -11,9 +13,9 @@ namespace
   pcl::PointCloud<pcl::PointXYZ>
   randomBox (const Eigen::Vector3d& size, std::mt19937& rng)
   {
-    std::uniform_real_distribution<double> u (-0.5, 0.5);
-    const Eigen::Quaterniond q = Eigen::Quaterniond::UnitRandom ();
-    const Eigen::Vector3d t (u (rng), u (rng), u (rng));
+    const Eigen::Isometry3d pose = pcl_tensor_test::randomRigidTransform (rng, 0.5);
+    const Eigen::Matrix3d q = pose.linear ();
+    const Eigen::Vector3d t = pose.translation ();
     pcl::PointCloud<pcl::PointXYZ> cloud;
     for (int corner = 0; corner < 8; ++corner)
     {
@@ -30,12 +32,12 @@ TEST (ObjectDimensions, BoxOfKnownSizeAtRandomPoseGivesDExactly)
 {
   // Eq. 1 on the corners of a 0.3 x 0.2 x 0.1 box under random rigid motions, in double precision.
   std::mt19937 rng (42);
-  std::uniform_real_distribution<double> u (-1.0, 1.0);
   const Eigen::Vector3d size (0.3, 0.2, 0.1);
   for (int trial = 0; trial < 50; ++trial)
   {
-    const Eigen::Quaterniond q = Eigen::Quaterniond::UnitRandom ();
-    const Eigen::Vector3d t (u (rng), u (rng), u (rng));
+    const Eigen::Isometry3d pose = pcl_tensor_test::randomRigidTransform (rng, 1.0);
+    const Eigen::Matrix3d q = pose.linear ();
+    const Eigen::Vector3d t = pose.translation ();
     std::vector<Eigen::Vector3d> corners;
     for (int corner = 0; corner < 8; ++corner)
       corners.push_back (q * Eigen::Vector3d ((corner & 1 ? 0.5 : -0.5) * size.x (), (corner & 2 ? 0.5 : -0.5) * size.y (),

@@ -5,6 +5,8 @@
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/kdtree/kdtree_flann.h>
 
+#include <limits>
+
 namespace pcl
 {
   namespace
@@ -27,15 +29,22 @@ namespace pcl
       return sums;
     }
 
-    /** Normalise and flip toward the sensor; a vertex without faces gets the line of sight. */
+    /** Normalise and flip toward the sensor. A vertex on no face has no normal to give: it gets
+      * NaN, so that consumers (point-to-plane ICP) skip it rather than trust a made-up direction. */
     void
     storeOriented (ScanMesh& mesh, const std::vector<Eigen::Vector3d>& sums)
     {
+      const float nan = std::numeric_limits<float>::quiet_NaN ();
       for (std::size_t i = 0; i < sums.size (); ++i)
       {
         auto& p = (*mesh.cloud)[i];
+        if (!(sums[i].norm () > 0.0))
+        {
+          p.normal_x = p.normal_y = p.normal_z = nan;
+          continue;
+        }
         const Eigen::Vector3d toward = mesh.viewpoint.towardSensor (p.getVector3fMap ().cast<double> ());
-        Eigen::Vector3d n = sums[i].norm () > 0.0 ? sums[i].normalized () : toward;
+        Eigen::Vector3d n = sums[i].normalized ();
         if (n.dot (toward) < 0.0)
           n = -n;
         p.getNormalVector3fMap () = n.cast<float> ();

@@ -5,6 +5,9 @@
 #include <pcl/registration/tensor_match.h>
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/common/transforms.h>
+#include <pcl/registration/point_to_plane_icp.h>
+
+#include <algorithm>
 
 namespace pcl
 {
@@ -62,8 +65,6 @@ namespace pcl
       for (std::size_t i = 0; i < scene.size (); i += step)
         scene_sample_->push_back (scene[i]);
 
-      icp_.setInputTarget (model_->fine.cloud);
-      icp_.setInputSource (scene_sample_);
       prepared_ = true;
     }
 
@@ -96,7 +97,8 @@ namespace pcl
       const Eigen::Matrix4d td = t.cast<double> ();
       for (const auto& p : scene)
         points.push_back ((td * p.getVector4fMap ().cast<double> ()).head<3> ());
-      return (principalExtents (points) - dims_.D).maxCoeff ();
+      const int k = std::clamp (params_.checked_dimensions, 1, 3);
+      return (principalExtents (points) - dims_.D).head (k).maxCoeff ();
     }
 
     bool
@@ -128,16 +130,24 @@ namespace pcl
       }
 
       // Step 10: refine with point-to-plane ICP.
-      icp_.setMaxCorrespondenceDistance (params_.icp_max_distance * d_res);
-      icp_.setMaximumIterations (params_.icp_iterations);
-      icp_.setTransformationEpsilon (1e-12);
-      icp_.setEuclideanFitnessEpsilon (0.0);
-      PointCloudN aligned;
-      icp_.align (aligned, hypothesis);
-      result.transform = icp_.getFinalTransformation ();
-      result.icp_fitness = icp_.getFitnessScore ();
+      PointToPlaneIcpParams icp;
+      icp.max_iterations = params_.icp_iterations;
+      icp.max_distance = params_.icp_max_distance * d_res;
+      icp.min_translation = 1e-3 * d_res;
+      const PointToPlaneIcpResult refined = pointToPlaneIcp (*scene_sample_, *model_->fine.cloud, model_tree_, hypothesis, icp);
+      result.transform = refined.transform;
+      result.icp_fitness = refined.rms;
 
-      // Steps 11-12: twice n_c scene points within d_res, over every scene point.
+      // Steps 11-12: twice n_c scene points within d_res, over every scene point; the sample
+      // rejects clear failures first, since the full count costs a search per scene point.
+      const double sampled = scale * static_cast<double> (
+          countCorrespondences (*scene_sample_, result.transform, params_.fine_distance * d_res));
+      if (sampled < 0.8 * 2.0 * result.required_correspondences)
+      {
+        result.fine_correspondences = sampled;
+        result.stage = TensorVerificationStage::FINE_OVERLAP;
+        return false;
+      }
       result.fine_correspondences = static_cast<double> (
           countCorrespondences (*scene_->fine.cloud, result.transform, params_.fine_distance * d_res));
       if (result.fine_correspondences < 2.0 * result.required_correspondences)

@@ -3,10 +3,13 @@
  */
 #include <pcl/registration/tensor_registration.h>
 #include <pcl/common/tensor_exceptions.h>
+#include <pcl/common/point_tests.h>
 #include <pcl/common/time.h>
 #include <pcl/common/transforms.h>
 #include <pcl/features/tensor.h>
 #include <pcl/registration/correspondence_rejection_tensor_verification.h>
+
+#include <cmath>
 
 namespace pcl
 {
@@ -27,6 +30,36 @@ namespace pcl
       pcl::PointCloud<pcl::TensorDescriptor>::Ptr tensors (new pcl::PointCloud<pcl::TensorDescriptor>);
       estimation.computeOrThrow (*tensors);
       return tensors;
+    }
+
+    namespace
+    {
+      /** Hypotheses that reached ICP and failed; a close repeat would fail the same way. */
+      class RefutedHypotheses
+      {
+        public:
+          RefutedHypotheses (double degrees, double distance) : cos_half_ (std::cos (degrees * M_PI / 360.0)), distance_ (distance) {}
+
+          bool
+          contains (const Eigen::Matrix4f& t) const
+          {
+            for (const auto& r : refuted_)
+            {
+              const Eigen::Matrix3f d = t.topLeftCorner<3, 3> () * r.topLeftCorner<3, 3> ().transpose ();
+              // cos(angle / 2) from the trace of the difference rotation, without acos.
+              const double cos_half = 0.5 * std::sqrt (std::max (0.0, 1.0 + static_cast<double> (d.trace ())));
+              if (cos_half >= cos_half_ && (t.topRightCorner<3, 1> () - r.topRightCorner<3, 1> ()).norm () <= distance_)
+                return true;
+            }
+            return false;
+          }
+
+          void add (const Eigen::Matrix4f& t) { refuted_.push_back (t); }
+
+        private:
+          double cos_half_, distance_;
+          std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> refuted_;
+      };
     }
 
     void
@@ -62,6 +95,8 @@ namespace pcl
       report.transform = Eigen::Matrix4f::Identity ();
       report.failures.fill (0);
       report.hypotheses_tried = 0;
+      report.hypotheses_skipped = 0;
+      RefutedHypotheses refuted (params.repeat_rotation, params.repeat_translation * report.resolution);
       const std::vector<TensorMatch>& matches = estimation.getMatches ();
       for (const TensorMatch& match : matches)
       {
@@ -70,6 +105,11 @@ namespace pcl
         const TensorDescriptor& scene_tensor = (*scene_tensors)[match.scene];
         const Eigen::Matrix4f hypothesis = transformFromTensorPair (
             (*model_tensors)[match.model], match.scene_flipped ? flipPairOrder (scene_tensor) : scene_tensor);
+        if (refuted.contains (hypothesis))
+        {
+          ++report.hypotheses_skipped;
+          continue;
+        }
         ++report.hypotheses_tried;
         TensorVerificationResult result;
         if (verification.verify (hypothesis, result))
@@ -81,8 +121,26 @@ namespace pcl
           break;
         }
         ++report.failures[static_cast<std::size_t> (result.stage)];
+        if (result.stage == TensorVerificationStage::FINE_OVERLAP || result.stage == TensorVerificationStage::FINE_DIMENSIONS)
+          refuted.add (hypothesis);
       }
       report.timings.verification_ms = watch.getTime ();
+    }
+
+    void
+    TensorRegistration::alignOrThrow (PointCloudSource& output)
+    {
+      if (!input_ || !target_)
+        PCL_TENSOR_THROW (BadArgumentException, "TensorRegistration needs a non-empty source (scene) and target (model) cloud");
+      for (const auto* cloud : {input_.get (), target_.get ()})
+      {
+        std::size_t finite = 0;
+        for (const auto& p : *cloud)
+          finite += pcl::isXYZFinite (p) ? 1 : 0;
+        if (finite < 3)
+          PCL_TENSOR_THROW (InvalidScanException, "a range image to register has " << finite << " finite points; at least 3 are needed");
+      }
+      align (output);
     }
 
     void

@@ -33,7 +33,7 @@ namespace pcl
       double getRadiusResolutions () const { return radius_resolutions_; }
 
       /** \brief Fill in the normals of \a mesh from its own faces (Method::FACE_AVERAGE). Vertices on
-        * no face get the line of sight toward the sensor.
+        * no face (edge pruning can isolate them) get a NaN normal: there is no surface to take it from.
         */
       void computeFaceAverage (ScanMesh& mesh) const;
 

@@ -7,7 +7,6 @@
 #include <pcl/features/tensor_descriptor.h>
 #include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/registration/correspondence_rejection.h>
-#include <pcl/registration/icp_nl.h>
 #include <pcl/registration/tensor_verification.h>
 #include <pcl/surface/scan_preparation.h>
 
@@ -101,7 +100,6 @@ namespace pcl
 
         pcl::KdTreeFLANN<pcl::PointNormal> model_tree_;
         PointCloudN::Ptr scene_sample_{new PointCloudN};
-        pcl::IterativeClosestPointWithNormals<pcl::PointNormal, pcl::PointNormal> icp_;
         std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> accepted_transforms_;
     };
   }

@@ -1,0 +1,51 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#pragma once
+
+#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
+
+#include <Eigen/Core>
+
+namespace pcl
+{
+  namespace registration
+  {
+    /** \brief Settings of pointToPlaneIcp(). */
+    struct PointToPlaneIcpParams
+    {
+      int max_iterations = 30;          ///< iterations at most
+      double max_distance = 0.0;        ///< pairs farther apart are not used (required, > 0)
+      double min_rotation = 1e-5;       ///< stop when an update turns less than this (radians) ...
+      double min_translation = 0.0;     ///< ... and moves less than this
+    };
+
+    /** \brief What pointToPlaneIcp() converged to. */
+    struct PointToPlaneIcpResult
+    {
+      Eigen::Matrix4f transform = Eigen::Matrix4f::Identity ();
+      int iterations = 0;
+      std::size_t pairs = 0;     ///< pairs used in the last iteration
+      double rms = 0.0;          ///< RMS point-to-plane distance of those pairs
+    };
+
+    /** \brief Point-to-plane ICP (Chen and Medioni's error, in the variant of Rusinkiewicz and Levoy,
+      * 2001, that Section 4.1 of Mian et al. uses): each iteration pairs every source point with its
+      * nearest target point, drops pairs farther than max_distance or whose target has no (finite)
+      * normal, and solves the linearised
+      * point-to-plane least squares for a small rotation and a translation.
+      * \param[in] source points to move (e.g. a sample of the scene)
+      * \param[in] target points with normals (the model), searched through \a tree
+      * \param[in] tree a kd-tree built on \a target
+      * \param[in] initial the starting transform of the source
+      * \param[in] params stopping rules
+      * \ingroup registration
+      */
+    PointToPlaneIcpResult
+    pointToPlaneIcp (const pcl::PointCloud<pcl::PointNormal>& source, const pcl::PointCloud<pcl::PointNormal>& target,
+                     const pcl::KdTreeFLANN<pcl::PointNormal>& tree, const Eigen::Matrix4f& initial,
+                     const PointToPlaneIcpParams& params);
+  }
+}

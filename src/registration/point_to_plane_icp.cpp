@@ -1,0 +1,97 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#include <pcl/registration/point_to_plane_icp.h>
+#include <pcl/common/tensor_exceptions.h>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
+
+namespace pcl
+{
+  namespace registration
+  {
+    namespace
+    {
+      /** One linearised point-to-plane step: the 6-vector (rotation, translation) in double. */
+      struct Step
+      {
+        Eigen::Matrix<double, 6, 1> x = Eigen::Matrix<double, 6, 1>::Zero ();
+        std::size_t pairs = 0;
+        double rms = 0.0;
+        bool solved = false;
+      };
+
+      Step
+      solveStep (const pcl::PointCloud<pcl::PointNormal>& source, const pcl::PointCloud<pcl::PointNormal>& target,
+                 const pcl::KdTreeFLANN<pcl::PointNormal>& tree, const Eigen::Matrix4f& t, double max_distance)
+      {
+        Eigen::Matrix<double, 6, 6> a = Eigen::Matrix<double, 6, 6>::Zero ();
+        Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero ();
+        const float max_d2 = static_cast<float> (max_distance * max_distance);
+        pcl::Indices index (1);
+        std::vector<float> d2 (1);
+        pcl::PointNormal q;
+        Step step;
+        double sum2 = 0.0;
+        for (const auto& p : source)
+        {
+          q.getVector4fMap () = t * p.getVector4fMap ();
+          if (tree.nearestKSearch (q, 1, index, d2) != 1 || d2[0] > max_d2)
+            continue;
+          const auto& m = target[index[0]];
+          const Eigen::Vector3d n = m.getNormalVector3fMap ().cast<double> ();
+          if (!n.allFinite ())
+            continue;  // a vertex on no face has no tangent plane
+          const Eigen::Vector3d s = q.getVector3fMap ().cast<double> ();
+          const double r = (s - m.getVector3fMap ().cast<double> ()).dot (n);
+          Eigen::Matrix<double, 6, 1> j;
+          j << s.cross (n), n;
+          a.noalias () += j * j.transpose ();
+          b.noalias () -= j * r;
+          sum2 += r * r;
+          ++step.pairs;
+        }
+        if (step.pairs < 6)
+          return step;
+        const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt (a);
+        if (ldlt.info () != Eigen::Success)
+          return step;
+        step.x = ldlt.solve (b);
+        step.rms = std::sqrt (sum2 / static_cast<double> (step.pairs));
+        step.solved = step.x.allFinite ();
+        return step;
+      }
+    }
+
+    PointToPlaneIcpResult
+    pointToPlaneIcp (const pcl::PointCloud<pcl::PointNormal>& source, const pcl::PointCloud<pcl::PointNormal>& target,
+                     const pcl::KdTreeFLANN<pcl::PointNormal>& tree, const Eigen::Matrix4f& initial,
+                     const PointToPlaneIcpParams& params)
+    {
+      if (!(params.max_distance > 0.0) || params.max_iterations < 0)
+        PCL_TENSOR_THROW (BadArgumentException, "ICP needs a positive pairing distance and a non-negative iteration count");
+      PointToPlaneIcpResult result;
+      result.transform = initial;
+      for (int it = 0; it < params.max_iterations; ++it)
+      {
+        const Step step = solveStep (source, target, tree, result.transform, params.max_distance);
+        result.pairs = step.pairs;
+        result.rms = step.rms;
+        if (!step.solved)
+          break;
+        // The small rotation of the linearisation, applied as an exact rotation about its axis.
+        const Eigen::Vector3d w = step.x.head<3> ();
+        Eigen::Affine3d update = Eigen::Affine3d::Identity ();
+        if (w.norm () > 0.0)
+          update.linear () = Eigen::AngleAxisd (w.norm (), w.normalized ()).toRotationMatrix ();
+        update.translation () = step.x.tail<3> ();
+        result.transform = (update.matrix () * result.transform.cast<double> ()).cast<float> ();
+        result.iterations = it + 1;
+        if (w.norm () < params.min_rotation && step.x.tail<3> ().norm () <= params.min_translation)
+          break;
+      }
+      return result;
+    }
+  }
+}

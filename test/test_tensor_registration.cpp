@@ -1,0 +1,127 @@
+#include "test_utils.h"
+
+#include <pcl/common/tensor_exceptions.h>
+#include <pcl/registration/registration_error.h>
+#include <pcl/registration/tensor_registration.h>
+#include <pcl/simulation/example_object.h>
+#include <pcl/simulation/synthetic_views.h>
+#include <pcl/simulation/view_set.h>
+
+namespace
+{
+  using pcl::registration::TensorRegistration;
+
+  /** A ring of 12 views, 30 degrees apart, of \a object, at 300 x 300 (about 25,000 points each). */
+  std::vector<pcl::SyntheticView>
+  ringViews (const pcl::ScanMesh& object)
+  {
+    pcl::SyntheticViewParams params;
+    params.camera.width = params.camera.height = 300;
+    return pcl::renderSyntheticViews (object, pcl::makeRingViewDirections (12, 30.0), params);
+  }
+
+  const std::vector<pcl::SyntheticView>&
+  exampleViews ()
+  {
+    static const std::vector<pcl::SyntheticView> views = ringViews (pcl::makeExampleObject ());
+    return views;
+  }
+
+  /** Register \a scene to \a model with the default parameters. */
+  const pcl::registration::TensorRegistrationReport&
+  registerViews (TensorRegistration& registration, const pcl::SyntheticView& model, const pcl::SyntheticView& scene)
+  {
+    registration.setInputTarget (model.view.cloud);
+    registration.setInputSource (scene.view.cloud);
+    registration.setTargetViewpoint (model.view.viewpoint);
+    registration.setSourceViewpoint (scene.view.viewpoint);
+    pcl::PointCloud<pcl::PointXYZ> aligned;
+    registration.align (aligned);
+    EXPECT_EQ (registration.hasConverged (), registration.getReport ().registered);
+    return registration.getReport ();
+  }
+
+  /** The exact scene -> model transform of two rendered views. */
+  Eigen::Affine3d
+  groundTruth (const pcl::SyntheticView& model, const pcl::SyntheticView& scene)
+  {
+    return model.view.pose.inverse () * scene.view.pose;
+  }
+}
+
+TEST (TensorRegistration, AdjacentSyntheticViewsAreRegisteredAccurately)
+{
+  const auto& views = exampleViews ();
+  for (const auto& [m, s] : std::vector<std::pair<int, int>>{{0, 1}, {4, 5}, {9, 8}})
+  {
+    TensorRegistration registration;
+    const auto& report = registerViews (registration, views[m], views[s]);
+    ASSERT_TRUE (report.registered) << "views " << m << " and " << s << " after " << report.hypotheses_tried << " hypotheses";
+    const auto error = pcl::registrationError (Eigen::Affine3d (report.transform.cast<double> ()),
+                                               groundTruth (views[m], views[s]), views[m].resolution);
+    std::cout << "views " << m << "-" << s << ": rotation error " << error.rotation_deg << " deg, translation error "
+              << error.translation_resolutions << " d_res, " << report.hypotheses_tried << " hypotheses" << std::endl;
+    EXPECT_LT (error.rotation_deg, 0.5);
+    EXPECT_LT (error.translation_resolutions, 1.0);
+  }
+}
+
+TEST (TensorRegistration, ViewsThatDoNotOverlapAreNotRegistered)
+{
+  const auto& views = exampleViews ();
+  TensorRegistration registration;
+  const auto& report = registerViews (registration, views[0], views[6]);  // front and back
+  EXPECT_FALSE (report.registered) << "a transform was reported for views that share no surface";
+  EXPECT_TRUE (registration.getFinalTransformation ().isIdentity ());
+}
+
+TEST (TensorRegistration, ViewsOfDifferentObjectsAreNotRegistered)
+{
+  pcl::ExampleObjectParams other;
+  other.seed = 7;
+  const auto other_views = ringViews (pcl::makeExampleObject (other));
+  TensorRegistration registration;
+  const auto& report = registerViews (registration, exampleViews ()[0], other_views[1]);
+  EXPECT_FALSE (report.registered) << "views of two different objects were registered";
+}
+
+TEST (TensorRegistration, SymmetricObjectGivesTheTruePoseOrNone)
+{
+  // A bumpless ellipsoid has three mirror planes: a symmetric pose matches the tensors equally well,
+  // but verification must never accept one.
+  pcl::ExampleObjectParams ellipsoid;
+  ellipsoid.bumps = 0;
+  const auto views = ringViews (pcl::makeExampleObject (ellipsoid));
+  for (const auto& [m, s] : std::vector<std::pair<int, int>>{{0, 1}, {2, 3}})
+  {
+    TensorRegistration registration;
+    const auto& report = registerViews (registration, views[m], views[s]);
+    if (!report.registered)
+      continue;
+    const auto error = pcl::registrationError (Eigen::Affine3d (report.transform.cast<double> ()),
+                                               groundTruth (views[m], views[s]), views[m].resolution);
+    EXPECT_LT (error.rotation_deg, 5.0) << "views " << m << "-" << s << ": a wrong pose was reported as verified";
+    EXPECT_LT (error.translation_resolutions, 20.0);
+  }
+}
+
+TEST (TensorRegistration, ReportsBadInputLoudly)
+{
+  TensorRegistration registration;
+  pcl::PointCloud<pcl::PointXYZ>::Ptr all_nan (new pcl::PointCloud<pcl::PointXYZ> (8, 8, pcl::PointXYZ (std::nanf (""), 0, 0)));
+  all_nan->is_dense = false;
+  registration.setInputSource (all_nan);
+  registration.setInputTarget (exampleViews ()[0].view.cloud);
+  pcl::PointCloud<pcl::PointXYZ> out;
+  EXPECT_THROW (registration.alignOrThrow (out), pcl::InvalidScanException);
+  EXPECT_FALSE (registration.hasConverged ());
+
+  // PCL's setInputSource refuses an empty cloud, so the source is then missing.
+  TensorRegistration unset;
+  unset.setInputSource (pcl::PointCloud<pcl::PointXYZ>::Ptr (new pcl::PointCloud<pcl::PointXYZ>));
+  unset.setInputTarget (exampleViews ()[0].view.cloud);
+  EXPECT_THROW (unset.alignOrThrow (out), pcl::BadArgumentException);
+  unset.align (out);  // PCL's own contract: logged, not converged
+  EXPECT_FALSE (unset.hasConverged ());
+  EXPECT_FALSE (unset.getReport ().registered);
+}
