@@ -9,7 +9,7 @@
 #include <pcl/features/normal_3d.h>
 #include <pcl/filters/filter.h>
 #include <pcl/filters/voxel_grid.h>
-#include <pcl/registration/icp_nl.h>
+#include <pcl/registration/point_to_plane_icp.h>
 #include <pcl/registration/sample_consensus_prerejective.h>
 
 #include <cstdlib>
@@ -94,15 +94,14 @@ namespace pcl_tensor_eval
       return result;
 
     watch.reset ();
-    pcl::IterativeClosestPointWithNormals<pcl::PointNormal, pcl::PointNormal> icp;
-    icp.setInputSource (scene.points);
-    icp.setInputTarget (model.points);
-    icp.setMaxCorrespondenceDistance (icp_params.icp_max_distance * resolution);
-    icp.setMaximumIterations (icp_params.icp_iterations);
-    icp.setTransformationEpsilon (1e-12);
-    icp.setEuclideanFitnessEpsilon (0.0);
-    icp.align (aligned, align.getFinalTransformation ());
-    result.transform = icp.getFinalTransformation ();
+    // The tensor verification's own point-to-plane ICP, with its iterations and distance.
+    pcl::KdTreeFLANN<pcl::PointNormal> tree;
+    tree.setInputCloud (model.points);
+    pcl::registration::PointToPlaneIcpParams icp;
+    icp.max_iterations = icp_params.icp_iterations;
+    icp.max_distance = icp_params.icp_max_distance * resolution;
+    result.transform = pcl::registration::pointToPlaneIcp (*scene.points, *model.points, tree,
+                                                           align.getFinalTransformation (), icp).transform;
     result.icp_ms = watch.getTime ();
     return result;
   }

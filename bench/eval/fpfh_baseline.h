@@ -58,8 +58,8 @@ namespace pcl_tensor_eval
   };
 
   /** \brief Align the scene view to the model view with SampleConsensusPrerejective, then refine with
-    * the same point-to-plane ICP (IterativeClosestPointWithNormals, iterations and distance of
-    * \a icp) that the tensor verification uses, on the downsampled points.
+    * the tensor verification's point-to-plane ICP (pcl::registration::pointToPlaneIcp, iterations and
+    * distance of \a icp), on the downsampled points.
     * \param[in] resolution d_res of the pair (ICP's distance is in d_res)
     */
   FpfhResult
