@@ -1,0 +1,81 @@
+/*
+ * pcl_tensor evaluation: views of one object with ground-truth poses, prepared once for all pairs.
+ */
+#include "eval_views.h"
+
+#include <pcl/common/time.h>
+#include <pcl/io/range_scan_io.h>
+#include <pcl/io/stanford_conf.h>
+#include <pcl/simulation/view_set.h>
+
+namespace pcl_tensor_eval
+{
+  EvalViews
+  loadStanfordViews (const std::string& conf_path)
+  {
+    const std::string dir = conf_path.substr (0, conf_path.find_last_of ('/') + 1);
+    EvalViews views;
+    for (const auto& entry : pcl::io::loadStanfordConf (conf_path))
+    {
+      pcl::io::RangeScan scan = pcl::io::loadRangeScan (dir + entry.file);
+      EvalView v;
+      v.name = entry.file.substr (0, entry.file.find_last_of ('.'));
+      v.cloud = scan.cloud;
+      v.viewpoint = scan.viewpoint;
+      v.pose = entry.pose ();
+      v.finite_points = scan.finite_points;
+      views.push_back (v);
+    }
+    return views;
+  }
+
+  EvalViews
+  makeSyntheticViews (const pcl::ScanMesh& mesh, const pcl::SyntheticViewParams& params)
+  {
+    EvalViews views;
+    const auto rendered = pcl::renderSyntheticViews (mesh, pcl::makeDefaultViewDirections (params.up), params);
+    for (std::size_t i = 0; i < rendered.size (); ++i)
+    {
+      EvalView v;
+      v.name = "view" + std::to_string (i);
+      v.cloud = rendered[i].view.cloud;
+      v.viewpoint = rendered[i].view.viewpoint;
+      v.pose = rendered[i].view.pose;
+      v.finite_points = pcl::io::updateDenseFlag (*v.cloud);
+      views.push_back (v);
+    }
+    return views;
+  }
+
+  pcl::ObjectDimensions
+  prepareViews (EvalViews& views, const pcl::registration::TensorRegistrationParams& params)
+  {
+    std::vector<const pcl::PointCloud<pcl::PointNormal>*> fine;
+    for (EvalView& v : views)
+    {
+      pcl::StopWatch watch;
+      v.prepared = std::make_shared<const pcl::PreparedScan> (pcl::prepareScan (*v.cloud, v.viewpoint, params.preparation));
+      v.prepare_ms = watch.getTime ();
+      fine.push_back (v.prepared->fine.cloud.get ());
+    }
+    // D must come from all views: the two views of a pair alone underestimate the object (Eq. 1).
+    const pcl::ObjectDimensions dims = pcl::computeObjectDimensions<pcl::PointNormal> (fine);
+    for (EvalView& v : views)
+    {
+      pcl::StopWatch watch;
+      v.tensors = pcl::registration::computeViewTensors (*v.prepared, dims, params);
+      v.tensors_ms = watch.getTime ();
+    }
+    return dims;
+  }
+
+  std::vector<std::pair<int, int>>
+  allPairs (int n)
+  {
+    std::vector<std::pair<int, int>> pairs;
+    for (int i = 0; i < n; ++i)
+      for (int j = i + 1; j < n; ++j)
+        pairs.emplace_back (i, j);
+    return pairs;
+  }
+}
