@@ -92,7 +92,9 @@ namespace pcl
     const double radius = radius_resolutions_ * meshResolution (fine);
     pcl::Indices nearest (1), neighbours;
     std::vector<float> d2 (1), neighbour_d2;
-    std::vector<Eigen::Vector3d> sums (reduced.cloud->size (), Eigen::Vector3d::Zero ());
+    // A reduced vertex whose fine neighbourhood gives no normal (its nearest fine vertex is isolated
+    // and alone within the radius) keeps approach (a): M'_i's own faces always give one.
+    std::vector<Eigen::Vector3d> sums = areaWeightedSums (reduced);
     for (std::size_t i = 0; i < reduced.cloud->size (); ++i)
     {
       // The corresponding vertex of M_i is the nearest one; its normal is the area-weighted
@@ -100,8 +102,11 @@ namespace pcl
       if (tree.nearestKSearch ((*reduced.cloud)[i], 1, nearest, d2) < 1)
         continue;
       tree.radiusSearch ((*fine.cloud)[nearest[0]], radius, neighbours, neighbour_d2);
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
       for (const auto j : neighbours)
-        sums[i] += fine_sums[j];
+        sum += fine_sums[j];
+      if (sum.norm () > 0.0)
+        sums[i] = sum;
     }
     storeOriented (reduced, sums);
   }

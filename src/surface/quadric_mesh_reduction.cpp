@@ -7,6 +7,8 @@
 #include <meshoptimizer.h>
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <limits>
 #include <numeric>
 
@@ -15,7 +17,7 @@ namespace pcl
   namespace
   {
     /** Build a mesh from a flat triangle index list, keeping only the vertices some triangle uses.
-      * Zero-area triangles are dropped: collapses along a straight border leave slivers whose
+      * Duplicated and zero-area triangles are dropped: collapses along a straight border leave slivers whose
       * three vertices are collinear, and their rounding-noise normals would spoil vertex normals. */
     void
     compactMesh (const std::vector<unsigned int>& indices, const pcl::PointCloud<pcl::PointNormal>& vertices, ScanMesh& out)
@@ -29,13 +31,24 @@ namespace pcl
         return (b - a).cross (c - a).norm () <= 1e-6 * longest2;
       };
 
+      // A triangle present twice (once per winding) is a fold that encloses nothing; both copies
+      // go, or their normals would cancel at the vertices (seen on bun270).
+      auto key = [&] (std::size_t t) {
+        std::array<unsigned int, 3> k{indices[t], indices[t + 1], indices[t + 2]};
+        std::sort (k.begin (), k.end ());
+        return k;
+      };
+      std::map<std::array<unsigned int, 3>, int> copies;
+      for (std::size_t t = 0; t + 2 < indices.size (); t += 3)
+        ++copies[key (t)];
+
       std::vector<pcl::index_t> vertex_of (vertices.size (), -1);
       out.cloud.reset (new pcl::PointCloud<pcl::PointNormal>);
       out.polygons.clear ();
       out.polygons.reserve (indices.size () / 3);
       for (std::size_t t = 0; t + 2 < indices.size (); t += 3)
       {
-        if (is_sliver (t))
+        if (is_sliver (t) || copies[key (t)] > 1)
           continue;
         pcl::Vertices tri;
         for (std::size_t k = 0; k < 3; ++k)
@@ -141,13 +154,8 @@ namespace pcl
     fine.polygons = largeComponents (input, static_cast<std::size_t> (min_component_fraction_ * static_cast<double> (input.polygons.size ())));
     const std::size_t faces = fine.polygons.size ();
     ScanMesh out;
-    if (faces <= static_cast<std::size_t> (target_faces_))
-    {
-      out.cloud.reset (new pcl::PointCloud<pcl::PointNormal> (*fine.cloud));
-      out.polygons = fine.polygons;
-    }
-    else
-      reduceWithMeshoptimizer (fine, static_cast<std::size_t> (target_faces_), out);
+    // At or under the target no edge collapses; the mesh is only cleaned, as every output is.
+    reduceWithMeshoptimizer (fine, static_cast<std::size_t> (target_faces_), out);
     if (out.polygons.empty ())
       PCL_TENSOR_THROW (InvalidScanException, "quadric simplification of " << faces << " faces left no face");
     out.viewpoint = fine.viewpoint;

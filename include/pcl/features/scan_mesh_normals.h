@@ -19,7 +19,8 @@ namespace pcl
         /** (a) Area-weighted average of the normals of the faces around the vertex in M'_i. Fast. */
         FACE_AVERAGE,
         /** (b) The normal of the nearest vertex of M_i, averaged (area-weighted) over the faces of
-          * M_i within a radius of it. More stable; the default. */
+          * M_i within a radius of it. More stable; the default. Where that neighbourhood has no face
+          * (an isolated fine vertex), the vertex keeps approach (a). */
         FINE_NEIGHBOURHOOD
       };
 

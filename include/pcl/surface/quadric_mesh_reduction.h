@@ -34,7 +34,8 @@ namespace pcl
       double getMinComponentFraction () const { return min_component_fraction_; }
 
       /** \brief Reduce \a fine into \a reduced. Normals of \a reduced are zero; its viewpoint is copied.
-        * Meshes already at or under the target are copied unchanged.
+        * Meshes already at or under the target keep
+        * their faces. Either way the output has no isolated vertex, no zero-area and no duplicated triangle.
         * \throw InvalidScanException when \a fine has no faces
         */
       void reduce (const ScanMesh& fine, ScanMesh& reduced) const;
