@@ -20,19 +20,13 @@ namespace pcl_tensor_eval
     using namespace pcl::registration;
     // The same matching and verification set-up as registerTensorViews().
     CorrespondenceEstimationTensor estimation;
-    estimation.setOverlapThreshold (params.overlap_threshold);
-    estimation.setCorrelationThreshold (params.correlation_threshold);
-    estimation.setThetaBinWidth (params.theta_bin_width);
-    estimation.setOrder (params.order);
+    configureMatcher (estimation, params);
     estimation.setInputSource (scene.tensors);
     estimation.setInputTarget (model.tensors);
     pcl::Correspondences correspondences;
     estimation.determineCorrespondences (correspondences);
     CorrespondenceRejectorTensorVerification verification;
-    verification.setModel (model.prepared, model.tensors);
-    verification.setScene (scene.prepared, scene.tensors);
-    verification.setObjectDimensions (dims);
-    verification.setParams (params.verification);
+    configureVerifier (verification, model.prepared, model.tensors, scene.prepared, scene.tensors, dims, params);
 
     MatchDiagnosis d;
     d.model = model.name;
@@ -43,9 +37,7 @@ namespace pcl_tensor_eval
     long rank = 0;
     for (const TensorMatch& match : estimation.getMatches ())
     {
-      const pcl::TensorDescriptor& s = (*scene.tensors)[match.scene];
-      const Eigen::Matrix4f hypothesis =
-          transformFromTensorPair ((*model.tensors)[match.model], match.scene_flipped ? pcl::flipPairOrder (s) : s);
+      const Eigen::Matrix4f hypothesis = hypothesisOf (match, *model.tensors, *scene.tensors);
       const pcl::RegistrationError e = pcl::registrationError (Eigen::Affine3d (hypothesis.cast<double> ()), truth, d_res);
       const bool good = e.rotation_deg <= kGoodHypothesisRotationDeg && e.translation_resolutions <= kGoodHypothesisTranslationResolutions;
       TensorVerificationResult result;

@@ -7,7 +7,6 @@
 #include <pcl/common/time.h>
 #include <pcl/common/transforms.h>
 #include <pcl/features/tensor.h>
-#include <pcl/registration/correspondence_rejection_tensor_verification.h>
 
 #include <cmath>
 
@@ -63,16 +62,42 @@ namespace pcl
     }
 
     void
+    configureMatcher (CorrespondenceEstimationTensor& matcher, const TensorRegistrationParams& params)
+    {
+      matcher.setOverlapThreshold (params.overlap_threshold);
+      matcher.setCorrelationThreshold (params.correlation_threshold);
+      matcher.setThetaBinWidth (params.theta_bin_width);
+      matcher.setOrder (params.order);
+    }
+
+    void
+    configureVerifier (CorrespondenceRejectorTensorVerification& verifier,
+                       const shared_ptr<const PreparedScan>& model, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& model_tensors,
+                       const shared_ptr<const PreparedScan>& scene, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& scene_tensors,
+                       const ObjectDimensions& dims, const TensorRegistrationParams& params)
+    {
+      verifier.setModel (model, model_tensors);
+      verifier.setScene (scene, scene_tensors);
+      verifier.setObjectDimensions (dims);
+      verifier.setParams (params.verification);
+    }
+
+    Eigen::Matrix4f
+    hypothesisOf (const TensorMatch& match, const pcl::PointCloud<pcl::TensorDescriptor>& model_tensors,
+                  const pcl::PointCloud<pcl::TensorDescriptor>& scene_tensors)
+    {
+      const TensorDescriptor& scene = scene_tensors[match.scene];
+      return transformFromTensorPair (model_tensors[match.model], match.scene_flipped ? flipPairOrder (scene) : scene);
+    }
+
+    void
     registerTensorViews (const shared_ptr<const PreparedScan>& model, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& model_tensors,
                          const shared_ptr<const PreparedScan>& scene, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& scene_tensors,
                          const ObjectDimensions& dims, const TensorRegistrationParams& params, TensorRegistrationReport& report)
     {
       pcl::StopWatch watch;
       CorrespondenceEstimationTensor estimation;
-      estimation.setOverlapThreshold (params.overlap_threshold);
-      estimation.setCorrelationThreshold (params.correlation_threshold);
-      estimation.setThetaBinWidth (params.theta_bin_width);
-      estimation.setOrder (params.order);
+      configureMatcher (estimation, params);
       estimation.setInputSource (scene_tensors);
       estimation.setInputTarget (model_tensors);
       pcl::Correspondences correspondences;
@@ -85,10 +110,7 @@ namespace pcl
 
       watch.reset ();
       CorrespondenceRejectorTensorVerification verification;
-      verification.setModel (model, model_tensors);
-      verification.setScene (scene, scene_tensors);
-      verification.setObjectDimensions (dims);
-      verification.setParams (params.verification);
+      configureVerifier (verification, model, model_tensors, scene, scene_tensors, dims, params);
       report.resolution = verification.getResolution ();
       report.dimensions = dims;
       report.registered = false;
@@ -102,9 +124,7 @@ namespace pcl
       {
         if (params.max_hypotheses > 0 && report.hypotheses_tried >= static_cast<std::size_t> (params.max_hypotheses))
           break;
-        const TensorDescriptor& scene_tensor = (*scene_tensors)[match.scene];
-        const Eigen::Matrix4f hypothesis = transformFromTensorPair (
-            (*model_tensors)[match.model], match.scene_flipped ? flipPairOrder (scene_tensor) : scene_tensor);
+        const Eigen::Matrix4f hypothesis = hypothesisOf (match, *model_tensors, *scene_tensors);
         if (refuted.contains (hypothesis))
         {
           ++report.hypotheses_skipped;

@@ -6,6 +6,7 @@
 #include <pcl/common/object_dimensions.h>
 #include <pcl/features/tensor_descriptor.h>
 #include <pcl/registration/correspondence_estimation_tensor.h>
+#include <pcl/registration/correspondence_rejection_tensor_verification.h>
 #include <pcl/registration/registration.h>
 #include <pcl/registration/tensor_match.h>
 #include <pcl/registration/tensor_verification.h>
@@ -91,6 +92,22 @@ namespace pcl
       */
     pcl::PointCloud<pcl::TensorDescriptor>::Ptr
     computeViewTensors (const PreparedScan& scan, const ObjectDimensions& dims, const TensorRegistrationParams& params);
+
+    /** \brief Set the matcher's thresholds, index and order from \a params. */
+    void
+    configureMatcher (CorrespondenceEstimationTensor& matcher, const TensorRegistrationParams& params);
+
+    /** \brief Give the verifier both views, D and the verification thresholds of \a params. */
+    void
+    configureVerifier (CorrespondenceRejectorTensorVerification& verifier,
+                       const shared_ptr<const PreparedScan>& model, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& model_tensors,
+                       const shared_ptr<const PreparedScan>& scene, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& scene_tensors,
+                       const ObjectDimensions& dims, const TensorRegistrationParams& params);
+
+    /** \brief The hypothesis of one match (Eq. 7-8), with the scene tensor in the order that matched. */
+    Eigen::Matrix4f
+    hypothesisOf (const TensorMatch& match, const pcl::PointCloud<pcl::TensorDescriptor>& model_tensors,
+                  const pcl::PointCloud<pcl::TensorDescriptor>& scene_tensors);
 
     /** \brief Register a prepared scene view to a prepared model view with given tensors: match
       * (Section 4), then verify hypotheses in order until one passes (Section 4.1).
