@@ -93,10 +93,7 @@ namespace
   printText (const pcl::registration::TensorRegistrationReport& r)
   {
     if (!r.registered)
-    {
-      print_warn ("NOT REGISTERED: none of %zu hypotheses passed verification\n", r.hypotheses_tried);
-      return;
-    }
+      return;  // run () says so, in one line on stderr
     print_info ("Registered after "); print_value ("%zu", r.hypotheses_tried); print_info (" hypotheses (");
     print_value ("%zu", r.matches); print_info (" matches of "); print_value ("%zu", r.scene_tensors);
     print_info (" x "); print_value ("%zu", r.model_tensors); print_info (" tensors) in "); print_value ("%g", r.timings.total_ms);
