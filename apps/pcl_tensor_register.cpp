@@ -71,7 +71,8 @@ namespace
     s << "{\"status\": \"" << (r.registered ? "registered" : "not_registered") << "\", \"transform\": [";
     for (int i = 0; i < 16; ++i)
       s << (i ? ", " : "") << r.transform (i / 4, i % 4);
-    s << "], \"hypotheses_tried\": " << r.hypotheses_tried << ", \"matches\": " << r.matches
+    s << "], \"hypotheses_tried\": " << r.hypotheses_tried << ", \"hypotheses_skipped\": " << r.hypotheses_skipped
+      << ", \"matches\": " << r.matches
       << ", \"tensors\": {\"model\": " << r.model_tensors << ", \"scene\": " << r.scene_tensors << "}"
       << ", \"resolution\": " << r.resolution;
     if (r.registered)

@@ -59,6 +59,21 @@ TEST (ScanMeshNormals, BunnyNormalsAreUnitAndFaceTheSensor)
   }
 }
 
+TEST (ScanMeshNormals, FineMeshGetsNormalsWithEitherMethod)
+{
+  // Verification's point-to-plane ICP reads M_i's normals, whichever approach M'_i uses.
+  const Eigen::Vector3f expected = Eigen::Vector3f (-0.3f, -0.2f, 1.0f).normalized ();
+  for (const Method method : {Method::FACE_AVERAGE, Method::FINE_NEIGHBOURHOOD})
+  {
+    pcl::ScanPreparationParams params;
+    params.normal_method = method;
+    params.target_faces = 100;
+    const pcl::PreparedScan scan = pcl::prepareScan (tiltedPlane (), pcl::ScanViewpoint::fromPositiveZ (), params);
+    for (const auto& p : *scan.fine.cloud)
+      EXPECT_GT (p.getNormalVector3fMap ().dot (expected), 1.0f - 1e-5f);
+  }
+}
+
 TEST (ScanMeshNormals, MeshesWithoutFacesAndBadRadiusThrow)
 {
   pcl::ScanMeshNormalEstimation estimation;

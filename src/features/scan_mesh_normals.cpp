@@ -78,14 +78,16 @@ namespace pcl
   ScanMeshNormalEstimation::compute (ScanMesh& reduced, ScanMesh& fine) const
   {
     requireFaces (reduced, "reduced");
+    requireFaces (fine, "fine");
+    // M_i always gets its face-average normals: verification's point-to-plane ICP runs on them,
+    // whichever approach M'_i uses.
+    const std::vector<Eigen::Vector3d> fine_sums = areaWeightedSums (fine);
+    storeOriented (fine, fine_sums);
     if (method_ == Method::FACE_AVERAGE)
     {
       computeFaceAverage (reduced);
       return;
     }
-    requireFaces (fine, "fine");
-    const std::vector<Eigen::Vector3d> fine_sums = areaWeightedSums (fine);
-    storeOriented (fine, fine_sums);
 
     pcl::KdTreeFLANN<pcl::PointNormal> tree;
     tree.setInputCloud (fine.cloud);

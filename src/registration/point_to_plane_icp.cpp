@@ -41,8 +41,8 @@ namespace pcl
             continue;
           const auto& m = target[index[0]];
           const Eigen::Vector3d n = m.getNormalVector3fMap ().cast<double> ();
-          if (!n.allFinite ())
-            continue;  // a vertex on no face has no tangent plane
+          if (!n.allFinite () || n.squaredNorm () == 0.0)
+            continue;  // no tangent plane: a vertex on no face, or a cloud without normals
           const Eigen::Vector3d s = q.getVector3fMap ().cast<double> ();
           const double r = (s - m.getVector3fMap ().cast<double> ()).dot (n);
           Eigen::Matrix<double, 6, 1> j;

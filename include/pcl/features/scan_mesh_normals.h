@@ -38,8 +38,9 @@ namespace pcl
         */
       void computeFaceAverage (ScanMesh& mesh) const;
 
-      /** \brief Fill in the normals of \a reduced with the configured method; \a fine is used by
-        * Method::FINE_NEIGHBOURHOOD and gets its own face-average normals as a side effect.
+      /** \brief Fill in the normals of \a reduced with the configured method, and those of \a fine by
+        * face average with either method (Method::FINE_NEIGHBOURHOOD reads them; point-to-plane
+        * verification needs them).
         * \throw InvalidScanException when a mesh has no faces
         */
       void compute (ScanMesh& reduced, ScanMesh& fine) const;

@@ -45,7 +45,12 @@ namespace pcl
         void setObjectDimensions (const ObjectDimensions& dims) { dims_ = dims; }
         const ObjectDimensions& getObjectDimensions () const { return dims_; }
 
-        void setParams (const TensorVerificationParams& params) { params_ = params; }
+        /** \brief Thresholds, ICP and sampling; a new sample size re-draws the scene sample. */
+        void setParams (const TensorVerificationParams& params)
+        {
+          params_ = params;
+          prepared_ = false;
+        }
         const TensorVerificationParams& getParams () const { return params_; }
 
         /** \brief Stop after this many correspondences have passed (0: verify them all; default 0). */

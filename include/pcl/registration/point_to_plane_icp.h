@@ -33,8 +33,8 @@ namespace pcl
 
     /** \brief Point-to-plane ICP (Chen and Medioni's error, in the variant of Rusinkiewicz and Levoy,
       * 2001, that Section 4.1 of Mian et al. uses): each iteration pairs every source point with its
-      * nearest target point, drops pairs farther than max_distance or whose target has no (finite)
-      * normal, and solves the linearised
+      * nearest target point, drops pairs farther than max_distance or whose target has no normal
+      * (NaN or zero), and solves the linearised
       * point-to-plane least squares for a small rotation and a translation.
       * \param[in] source points to move (e.g. a sample of the scene)
       * \param[in] target points with normals (the model), searched through \a tree

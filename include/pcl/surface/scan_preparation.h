@@ -26,7 +26,7 @@ namespace pcl
   /** \brief One view, ready for tensor computation. */
   struct PreparedScan
   {
-    ScanMesh fine;            ///< M_i, with face-average normals when approach (b) was used
+    ScanMesh fine;            ///< M_i, with face-average normals (NaN on vertices of no face)
     ScanMesh reduced;         ///< M'_i, with normals
     double resolution = 0.0;  ///< d_res of M_i: the mean edge length
   };
