@@ -6,6 +6,7 @@
  * Runs on the built-in example object always, and on the Stanford bunny scan bun000 when
  * ../shared/data is present. File reading is timed separately from preparation.
  */
+#include <pcl/io/ply_io.h>
 #include <pcl/io/range_scan_io.h>
 #include <pcl/simulation/example_object.h>
 #include <pcl/surface/quadric_mesh_reduction.h>
@@ -43,6 +44,19 @@ namespace
       return;
     for (auto _ : state)
       benchmark::DoNotOptimize (pcl::io::loadRangeScan (kBunny));
+  }
+
+  /** The peer: PCL's own PLY reader on the same file (the ratio to BM_ReadBunnyScan is the gain). */
+  void
+  BM_ReadBunnyScanWithPCLReader (benchmark::State& state)
+  {
+    if (!haveBunny (state))
+      return;
+    for (auto _ : state)
+    {
+      pcl::PointCloud<pcl::PointXYZ> cloud;
+      benchmark::DoNotOptimize (pcl::PLYReader ().read (kBunny, cloud));
+    }
   }
 
   void
@@ -105,6 +119,7 @@ namespace
 }
 
 BENCHMARK (BM_ReadBunnyScan)->Unit (benchmark::kMillisecond);
+BENCHMARK (BM_ReadBunnyScanWithPCLReader)->Unit (benchmark::kMillisecond);
 BENCHMARK (BM_TriangulateBunny)->Arg (0)->Arg (1)->ArgName ("delaunay")->Unit (benchmark::kMillisecond);
 BENCHMARK (BM_ReduceBunny)->Arg (400)->ArgName ("faces")->Unit (benchmark::kMillisecond);
 BENCHMARK (BM_PrepareBunny)->Arg (0)->Arg (1)->ArgName ("normal_method")->Unit (benchmark::kMillisecond);

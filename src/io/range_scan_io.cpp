@@ -2,6 +2,7 @@
  * pcl_tensor: automatic pairwise registration of range images with tensors.
  */
 #include <pcl/io/range_scan_io.h>
+#include <pcl/io/ascii_range_ply.h>
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
@@ -62,8 +63,8 @@ namespace pcl
       int status = -1;
       if (ext == "ply")
       {
-        pcl::PLYReader reader;
-        status = reader.read (path, *scan.cloud);
+        // The fast path reads the ASCII scans (Stanford's) several times faster than pcl::PLYReader.
+        status = readAsciiRangePLY (path, *scan.cloud) ? 0 : pcl::PLYReader ().read (path, *scan.cloud);
       }
       else if (ext == "pcd")
       {
