@@ -110,3 +110,35 @@ TEST (TransformFromTensorPair, RecoversAKnownRigidMotion)
     EXPECT_TRUE (estimate.isApprox (t.matrix (), 1e-5f)) << "trial " << trial << "\n" << estimate << "\n" << t.matrix ();
   }
 }
+
+TEST (TensorBinSet, SharedBinsAndOverlapEqualTheComparators)
+{
+  std::mt19937 rng (11);
+  for (const int grid : {10, 15})
+    for (int trial = 0; trial < 50; ++trial)
+    {
+      auto random_tensor = [&] () {
+        std::bernoulli_distribution occupied (0.05 + 0.01 * (trial % 20));
+        pcl::TensorDescriptor t;
+        t.grid_size = grid;
+        for (int k = 0; k < grid * grid * grid; ++k)
+          if (occupied (rng))
+          {
+            t.bin_index.push_back (static_cast<std::uint16_t> (k));
+            t.bin_area.push_back (1.0f + static_cast<float> (k % 7));
+          }
+        return t;
+      };
+      const auto scene = random_tensor (), model = random_tensor ();
+      pcl::registration::TensorComparator comparator;
+      comparator.setScene (scene);
+      pcl::registration::TensorMatch m;
+      comparator.compare (model, m);
+      const pcl::registration::TensorBinSet s (scene), t (model);
+      ASSERT_EQ (s.countShared (t), m.n_q);
+      EXPECT_EQ (t.size (), static_cast<int> (model.bin_index.size ()));
+      // Bit-equal R_O: the matcher's pre-check must never drop a match the comparator would keep.
+      EXPECT_EQ (pcl::registration::overlapRatio (s.countShared (t), model.bin_index.size (), scene.bin_index.size ()),
+                 m.overlap_ratio);
+    }
+}

@@ -60,18 +60,29 @@ namespace pcl
       std::vector<int> everything (target_->size ());
       std::iota (everything.begin (), everything.end (), 0);
 
+      std::vector<TensorBinSet> model_bins (target_->begin (), target_->end ());
       std::vector<TensorMatch> matches;
       TensorComparator comparator;
       comparisons_ = 0;
       auto match_scene = [&] (const TensorDescriptor& scene, int scene_index, bool flipped) {
-        comparator.setScene (scene);
+        const TensorBinSet scene_bins (scene);
+        bool scene_loaded = false;
         const TensorThetaIndex::Range range = use_theta_index_ ? index.candidates (scene.theta_d)
             : TensorThetaIndex::Range{everything.data (), everything.data () + everything.size ()};
         for (const int m : range)
         {
+          ++comparisons_;
+          // R_O from the bitsets first: most candidates fail t_r, and C_c is needed only for the rest.
+          const int n_q = scene_bins.countShared (model_bins[m]);
+          if (overlapRatio (n_q, model_bins[m].size (), scene_bins.size ()) < overlap_threshold_)
+            continue;
+          if (!scene_loaded)
+          {
+            comparator.setScene (scene);
+            scene_loaded = true;
+          }
           TensorMatch match;
           comparator.compare ((*target_)[m], match);
-          ++comparisons_;
           if (match.overlap_ratio < overlap_threshold_ || match.correlation < correlation_threshold_)
             continue;
           match.model = m;

@@ -3,12 +3,31 @@
  */
 #include <pcl/registration/tensor_match.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace pcl
 {
   namespace registration
   {
+    TensorBinSet::TensorBinSet (const TensorDescriptor& tensor)
+      : words_ ((static_cast<std::size_t> (tensor.denseSize ()) + 63) / 64, 0u)
+      , size_ (static_cast<int> (tensor.bin_index.size ()))
+    {
+      for (const std::uint16_t bin : tensor.bin_index)
+        words_[bin / 64] |= std::uint64_t{1} << (bin % 64);
+    }
+
+    int
+    TensorBinSet::countShared (const TensorBinSet& other) const
+    {
+      const std::size_t n = std::min (words_.size (), other.words_.size ());
+      int shared = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        shared += __builtin_popcountll (words_[i] & other.words_[i]);
+      return shared;
+    }
+
     void
     TensorComparator::setScene (const TensorDescriptor& scene)
     {
@@ -52,9 +71,7 @@ namespace pcl
         spq += p * q;
       }
       match.n_q = n_q;
-      const double n_m = static_cast<double> (model.bin_index.size ()), n_s = static_cast<double> (scene_bins_);
-      const double union_bins = n_m + n_s - n_q;
-      match.overlap_ratio = union_bins > 0.0 ? static_cast<float> (n_q / union_bins) : 0.0f;  // Eq. 5
+      match.overlap_ratio = overlapRatio (n_q, model.bin_index.size (), scene_bins_);  // Eq. 5
       const double n = n_q;
       const double var_p = n * spp - sp * sp, var_q = n * sqq - sq * sq;
       if (n_q < 2 || var_p <= 0.0 || var_q <= 0.0)
