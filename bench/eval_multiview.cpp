@@ -45,11 +45,13 @@ namespace
                  "  --max-references N   registered views tried per view, 0 = all (default %d)\n"
                  "  --global-iterations N  iterations of the global step (default %d)\n"
                  "  --global-distance D  pairing distance of the global step in d_res (default %g)\n"
+                 "  --global-tolerance T  global verification: allowed excess over D in d_res (default %g)\n"
+                 "  --fine-dimension-tolerance T  local verification after ICP: allowed excess over D in d_res (default %g)\n"
                  "  --min-overlap F      pairs found for the global step: overlap fraction, 0 = none (default %g)\n"
                  "  --out DIR            where the CSVs go (default %s)\n"
                  "  --data DIR           third-party data (default %s)\n",
                  name, d.lum_rounds, d.params.max_references, d.params.global.max_iterations, d.params.global.max_distance,
-                 d.params.min_overlap, d.out.c_str (), d.data.c_str ());
+                 d.params.global_verification.tolerance, d.params.pairwise.verification.fine_dimension_tolerance, d.params.min_overlap, d.out.c_str (), d.data.c_str ());
   }
 
   void
@@ -121,10 +123,43 @@ namespace
                    v.name.c_str (), v.registered ? "yes" : "NO", reference.c_str (), v.pairwise.hypotheses_tried, v.globally_refused,
                    v.global_excess, pairwise_errors[i].rotation_deg, pairwise_errors[i].translation_res, global_errors[i].rotation_deg,
                    global_errors[i].translation_res, v.error.empty () ? "" : "  ", v.error.c_str ());
+      if (!v.registered)
+      {
+        std::printf ("    last tried: %zu matches, failures per stage:", v.pairwise.matches);
+        for (const std::size_t f : v.pairwise.failures)
+          std::printf (" %zu", f);
+        std::printf ("\n");
+      }
       csv << v.name << ',' << v.registered << ',' << reference << ',' << v.pairwise.hypotheses_tried << ',' << v.globally_refused << ','
           << v.global_excess << ',' << pairwise_errors[i].rotation_deg << ',' << pairwise_errors[i].translation_res << ','
           << global_errors[i].rotation_deg << ',' << global_errors[i].translation_res << ',' << lum_errors[i].rotation_deg << ','
           << lum_errors[i].translation_res << ',' << v.prepare_ms << ',' << v.tensors_ms << ',' << v.pairwise_ms << '\n';
+    }
+    {
+      // How far all views together, at their true poses, exceed Eq. 1's D: what global verification must allow.
+      pcl::registration::GlobalVerification truth (result.dimensions, result.resolution, params.global_verification);
+      for (std::size_t i = 1; i < views.size (); ++i)
+        if (result.views[i].prepared)
+          truth.addView (*result.views[i].prepared->fine.cloud, views[i].pose);
+      if (result.views[0].prepared)
+        std::printf ("  all views at their true poses exceed D by %.2f d_res (two largest extents)\n",
+                     truth.excess (*result.views[0].prepared->fine.cloud, views[0].pose));
+    }
+    if (result.reference >= 0 && !result.pairs.empty ())
+    {
+      // The same pairs' RMS point-to-plane distance at the true poses, for comparison with the global step's.
+      std::vector<const pcl::ScanMesh*> meshes;
+      pcl::registration::ViewPoses truth;
+      for (std::size_t i = 0; i < views.size (); ++i)
+      {
+        meshes.push_back (result.views[i].prepared ? &result.views[i].prepared->fine : nullptr);
+        truth.push_back (views[result.reference].pose.inverse () * views[i].pose);
+      }
+      auto one = params.global;
+      one.max_iterations = 1;
+      const auto at_truth = pcl::registration::multiviewPointToPlaneIcp (meshes, truth, result.pairs, result.reference,
+                                                                         result.resolution, one);
+      std::printf ("  the global step's pairs at the true poses: rms %.3f d_res\n", at_truth.rms_before / result.resolution);
     }
     std::printf ("  registered %zu/%zu, d_res %.6f, D = [%.4f %.4f %.4f], global step: %zu pairs, %d iterations, rms %.3f -> %.3f d_res\n",
                  result.registeredCount (), views.size (), result.resolution, result.dimensions.D.x (), result.dimensions.D.y (),
@@ -161,6 +196,8 @@ main (int argc, char** argv)
   pcl::console::parse_argument (argc, argv, "--global-iterations", p.global.max_iterations);
   pcl::console::parse_argument (argc, argv, "--global-distance", p.global.max_distance);
   pcl::console::parse_argument (argc, argv, "--min-overlap", p.min_overlap);
+  pcl::console::parse_argument (argc, argv, "--global-tolerance", p.global_verification.tolerance);
+  pcl::console::parse_argument (argc, argv, "--fine-dimension-tolerance", p.pairwise.verification.fine_dimension_tolerance);
   pcl::console::setVerbosityLevel (pcl::console::L_ERROR);
   try
   {
