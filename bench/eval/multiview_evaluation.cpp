@@ -79,16 +79,6 @@ namespace pcl_tensor_eval
 
   namespace
   {
-    Eigen::Vector6f
-    toVector6 (const Eigen::Affine3d& pose)
-    {
-      float x, y, z, roll, pitch, yaw;
-      pcl::getTranslationAndEulerAngles (pose.cast<float> (), x, y, z, roll, pitch, yaw);
-      Eigen::Vector6f v;
-      v << x, y, z, roll, pitch, yaw;
-      return v;
-    }
-
     /** An evenly spaced sample of a view's fine points. */
     pcl::PointCloud<pcl::PointXYZ>::Ptr
     sampleCloud (const pcl::PointCloud<pcl::PointNormal>& fine, int n)
@@ -116,11 +106,14 @@ namespace pcl_tensor_eval
     std::vector<int> vertex_of (result.views.size (), -1);
     pcl::registration::LUM<pcl::PointXYZ> lum;
     std::vector<pcl::PointCloud<pcl::PointXYZ>::Ptr> clouds;
-    const Eigen::Affine3d reference_inv = result.views[result.reference].pairwise_pose.inverse ();
+    // As PCL's own lum tool does: the clouds go in already in the common frame, with zero poses, and
+    // LUM's poses are corrections of the pairwise ones. (Given the pairwise poses as 6-vectors
+    // instead, LUM's Euler-angle linearisation diverged on the turntable: 177 degrees.)
     for (const int i : order)
     {
       clouds.push_back (sampleCloud (*result.views[i].prepared->fine.cloud, sample_points));
-      vertex_of[i] = static_cast<int> (lum.addPointCloud (clouds.back (), toVector6 (reference_inv * result.views[i].pairwise_pose)));
+      pcl::transformPointCloud (*clouds.back (), *clouds.back (), result.views[i].pairwise_pose.cast<float> ());
+      vertex_of[i] = static_cast<int> (lum.addPointCloud (clouds.back ()));
     }
     const float max_d2 = static_cast<float> (std::pow (max_distance_res * result.resolution, 2));
     for (int round = 0; round < rounds; ++round)
@@ -148,7 +141,7 @@ namespace pcl_tensor_eval
     pcl::registration::ViewPoses poses (result.views.size (), Eigen::Affine3d::Identity ());
     for (std::size_t i = 0; i < result.views.size (); ++i)
       if (vertex_of[i] >= 0)
-        poses[i] = lum.getTransformation (vertex_of[i]).cast<double> ();
+        poses[i] = lum.getTransformation (vertex_of[i]).cast<double> () * result.views[i].pairwise_pose;
     return poses;
   }
 }
