@@ -283,8 +283,12 @@ namespace pcl
             poses[i] = result.views[i].pairwise_pose;
           }
         result.pairs = globalPairs (params, given, meshes, poses, result);
+        const std::size_t steps = static_cast<std::size_t> (std::max (params.global.max_iterations, 1));
         if (result.pairs.empty ())
+        {
+          report (progress, MultiviewStage::GLOBAL, steps, steps);
           return;
+        }
         const MultiviewIcpProgress icp_progress = [&] (int it, int max_it) {
           report (progress, MultiviewStage::GLOBAL, static_cast<std::size_t> (it), static_cast<std::size_t> (max_it));
         };
@@ -293,7 +297,7 @@ namespace pcl
         for (std::size_t i = 0; i < result.views.size (); ++i)
           if (result.views[i].registered)
             result.views[i].pose = result.global.poses[i];
-        report (progress, MultiviewStage::GLOBAL, 1, 1);
+        report (progress, MultiviewStage::GLOBAL, steps, steps);  // done, also when it converged early
       }
 
       void
