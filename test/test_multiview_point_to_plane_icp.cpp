@@ -74,6 +74,18 @@ namespace
     return t;
   }
 
+  /** The true poses with every view but the first moved by perturbation (rng, 0.3 deg, 1 d_res): about
+    * view 0's sensor (0.3 m away) that is 1-3 d_res at the object, within the pairing distance. */
+  ViewPoses
+  perturbedTruth (const Ring& r, std::uint32_t seed)
+  {
+    std::mt19937 rng (seed);  // fixed seed: the same motions every run
+    ViewPoses poses = r.truth;
+    for (std::size_t i = 1; i < poses.size (); ++i)
+      poses[i] = perturbation (rng, 0.3, r.resolution) * r.truth[i];
+    return poses;
+  }
+
   /** How far the view's centroid lands from where the truth puts it, in d_res. */
   double
   centroidError (const pcl::ScanMesh& mesh, const Eigen::Affine3d& a, const Eigen::Affine3d& b, double resolution)
@@ -89,12 +101,7 @@ namespace
 TEST (MultiviewPointToPlaneIcp, RecoversPerturbedRingPoses)
 {
   const Ring& r = ring ();
-  // Every view but the first is moved 0.3 degrees about view 0's sensor (0.3 m away) and 1 d_res:
-  // 1-3 d_res at the object, within the pairing distance. Fixed seed: the same motions every run.
-  std::mt19937 rng (2006);
-  ViewPoses initial = r.truth;
-  for (std::size_t i = 1; i < initial.size (); ++i)
-    initial[i] = perturbation (rng, 0.3, r.resolution) * r.truth[i];
+  const ViewPoses initial = perturbedTruth (r, 2006);
 
   int calls = 0;
   const MultiviewIcpResult result = multiviewPointToPlaneIcp (meshes (r), initial, ringPairs (12), 0, r.resolution, {},
@@ -114,10 +121,7 @@ TEST (MultiviewPointToPlaneIcp, RecoversPerturbedRingPoses)
 TEST (MultiviewPointToPlaneIcp, ViewsInNoPairKeepTheirPose)
 {
   const Ring& r = ring ();
-  std::mt19937 rng (7);
-  ViewPoses initial = r.truth;
-  for (std::size_t i = 1; i < initial.size (); ++i)
-    initial[i] = perturbation (rng, 0.3, r.resolution) * r.truth[i];
+  const ViewPoses initial = perturbedTruth (r, 7);
   const MultiviewIcpResult result = multiviewPointToPlaneIcp (meshes (r), initial, {{0, 1}, {1, 2}}, 0, r.resolution, {});
   for (std::size_t i = 3; i < r.truth.size (); ++i)
     EXPECT_TRUE (result.poses[i].isApprox (initial[i])) << "view " << i << " is in no pair but moved";
