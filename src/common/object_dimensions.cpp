@@ -49,6 +49,12 @@ namespace pcl
     return extents;
   }
 
+  double
+  dimensionExcess (const Eigen::Vector3d& extents, const ObjectDimensions& dims, int checked)
+  {
+    return (extents - dims.D).head (std::clamp (checked, 1, 3)).maxCoeff ();
+  }
+
   template <typename PointT> Eigen::Vector3d
   principalExtents (const std::vector<const pcl::PointCloud<PointT>*>& clouds)
   {

@@ -17,21 +17,29 @@ namespace pcl
     {
       return (*mesh.cloud)[i].getVector3fMap ().cast<double> ();
     }
+
+    /** Every triangle's edges as (low, high) vertex pairs, sorted: an interior edge appears twice. */
+    std::vector<std::pair<pcl::index_t, pcl::index_t>>
+    sortedEdges (const ScanMesh& mesh)
+    {
+      std::vector<std::pair<pcl::index_t, pcl::index_t>> edges;
+      edges.reserve (mesh.polygons.size () * 3);
+      for (const auto& poly : mesh.polygons)
+        for (std::size_t k = 0; k < poly.vertices.size (); ++k)
+        {
+          const pcl::index_t a = poly.vertices[k], b = poly.vertices[(k + 1) % poly.vertices.size ()];
+          edges.emplace_back (std::min (a, b), std::max (a, b));
+        }
+      std::sort (edges.begin (), edges.end ());
+      return edges;
+    }
   }
 
   double
   meshResolution (const ScanMesh& mesh)
   {
     // Each interior edge is shared by two triangles; count it once.
-    std::vector<std::pair<pcl::index_t, pcl::index_t>> edges;
-    edges.reserve (mesh.polygons.size () * 3);
-    for (const auto& poly : mesh.polygons)
-      for (std::size_t k = 0; k < poly.vertices.size (); ++k)
-      {
-        const pcl::index_t a = poly.vertices[k], b = poly.vertices[(k + 1) % poly.vertices.size ()];
-        edges.emplace_back (std::min (a, b), std::max (a, b));
-      }
-    std::sort (edges.begin (), edges.end ());
+    std::vector<std::pair<pcl::index_t, pcl::index_t>> edges = sortedEdges (mesh);
     edges.erase (std::unique (edges.begin (), edges.end ()), edges.end ());
     if (edges.empty ())
       return 0.0;
@@ -39,6 +47,23 @@ namespace pcl
     for (const auto& e : edges)
       sum += (vertex (mesh, e.first) - vertex (mesh, e.second)).norm ();
     return sum / static_cast<double> (edges.size ());
+  }
+
+  std::vector<bool>
+  meshBoundaryVertices (const ScanMesh& mesh)
+  {
+    const std::vector<std::pair<pcl::index_t, pcl::index_t>> edges = sortedEdges (mesh);
+    std::vector<bool> boundary (mesh.cloud->size (), false);
+    for (std::size_t i = 0; i < edges.size ();)
+    {
+      std::size_t j = i + 1;
+      while (j < edges.size () && edges[j] == edges[i])
+        ++j;
+      if (j - i == 1)
+        boundary[edges[i].first] = boundary[edges[i].second] = true;
+      i = j;
+    }
+    return boundary;
   }
 
   double

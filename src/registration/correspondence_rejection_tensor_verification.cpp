@@ -97,8 +97,7 @@ namespace pcl
       const Eigen::Matrix4d td = t.cast<double> ();
       for (const auto& p : scene)
         points.push_back ((td * p.getVector4fMap ().cast<double> ()).head<3> ());
-      const int k = std::clamp (params_.checked_dimensions, 1, 3);
-      return (principalExtents (points) - dims_.D).head (k).maxCoeff ();
+      return pcl::dimensionExcess (principalExtents (points), dims_, params_.checked_dimensions);
     }
 
     bool

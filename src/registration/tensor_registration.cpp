@@ -93,7 +93,8 @@ namespace pcl
     void
     registerTensorViews (const shared_ptr<const PreparedScan>& model, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& model_tensors,
                          const shared_ptr<const PreparedScan>& scene, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& scene_tensors,
-                         const ObjectDimensions& dims, const TensorRegistrationParams& params, TensorRegistrationReport& report)
+                         const ObjectDimensions& dims, const TensorRegistrationParams& params, TensorRegistrationReport& report,
+                         const HypothesisAcceptor& accept)
     {
       pcl::StopWatch watch;
       CorrespondenceEstimationTensor estimation;
@@ -118,6 +119,7 @@ namespace pcl
       report.failures.fill (0);
       report.hypotheses_tried = 0;
       report.hypotheses_skipped = 0;
+      report.hypotheses_refused = 0;
       RefutedHypotheses refuted (params.repeat_rotation, params.repeat_translation * report.resolution);
       const std::vector<TensorMatch>& matches = estimation.getMatches ();
       for (const TensorMatch& match : matches)
@@ -132,7 +134,15 @@ namespace pcl
         }
         ++report.hypotheses_tried;
         TensorVerificationResult result;
-        if (verification.verify (hypothesis, result))
+        const bool verified = verification.verify (hypothesis, result);
+        if (verified && accept && !accept (result))
+        {
+          // Refused by the caller (global verification): a close repeat converges to the same pose.
+          ++report.hypotheses_refused;
+          refuted.add (hypothesis);
+          continue;
+        }
+        if (verified)
         {
           report.registered = true;
           report.transform = result.transform;

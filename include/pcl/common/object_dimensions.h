@@ -52,6 +52,15 @@ namespace pcl
   template <typename PointT> Eigen::Vector3d
   principalExtents (const std::vector<const pcl::PointCloud<PointT>*>& clouds);
 
+  /** \brief How far extents exceed D: max over the \a checked largest extents of (extents - D), as
+    * Eq. 9 is compared with D in Sections 4.1 and 4.2.
+    * \param[in] extents principal extents, sorted from largest to smallest (principalExtents())
+    * \param[in] dims the object's D
+    * \param[in] checked how many of the largest extents are compared (clamped to 1..3)
+    */
+  double
+  dimensionExcess (const Eigen::Vector3d& extents, const ObjectDimensions& dims, int checked = 3);
+
   /** \brief D from all the views of an object (Eq. 1). */
   template <typename PointT> ObjectDimensions
   computeObjectDimensions (const std::vector<const pcl::PointCloud<PointT>*>& views);

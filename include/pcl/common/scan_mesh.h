@@ -37,6 +37,10 @@ namespace pcl
   double
   meshResolution (const ScanMesh& mesh);
 
+  /** \brief Which vertices lie on the mesh's boundary: on an edge that only one triangle uses. */
+  std::vector<bool>
+  meshBoundaryVertices (const ScanMesh& mesh);
+
   /** \brief Total surface area of the mesh's triangles. */
   double
   meshArea (const ScanMesh& mesh);

@@ -13,6 +13,7 @@
 #include <pcl/surface/scan_preparation.h>
 
 #include <array>
+#include <functional>
 
 namespace pcl
 {
@@ -75,6 +76,9 @@ namespace pcl
       std::size_t comparisons = 0;       ///< tensor pairs compared (mu, Eq. 13)
       std::size_t hypotheses_tried = 0;  ///< matches verified until one passed (or all failed)
       std::size_t hypotheses_skipped = 0;  ///< repeats of hypotheses that ICP refuted
+      /** Hypotheses that passed local verification but that the caller's HypothesisAcceptor refused
+        * (global verification, Section 4.2). */
+      std::size_t hypotheses_refused = 0;
       /** How many hypotheses failed at each stage (index: TensorVerificationStage). */
       std::array<std::size_t, 5> failures{};
       TensorMatch winning_match;                ///< valid when registered
@@ -109,14 +113,23 @@ namespace pcl
     hypothesisOf (const TensorMatch& match, const pcl::PointCloud<pcl::TensorDescriptor>& model_tensors,
                   const pcl::PointCloud<pcl::TensorDescriptor>& scene_tensors);
 
+    /** \brief A further test of a hypothesis that passed local verification, e.g. global verification
+      * (Section 4.2; Fig. 7, steps 15-16): return false to refuse it, and the next tensor match is tried.
+      * \param[in] result the locally verified hypothesis (result.transform: scene -> model, refined)
+      */
+    using HypothesisAcceptor = std::function<bool (const TensorVerificationResult& result)>;
+
     /** \brief Register a prepared scene view to a prepared model view with given tensors: match
-      * (Section 4), then verify hypotheses in order until one passes (Section 4.1).
+      * (Section 4), then verify hypotheses in order until one passes (Section 4.1) and, when
+      * \a accept is given, is accepted by it too.
       * \param[in,out] report filled in; its timings for preparation and tensors are left as they are
+      * \param[in] accept optional further test of each locally verified hypothesis
       */
     void
     registerTensorViews (const shared_ptr<const PreparedScan>& model, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& model_tensors,
                          const shared_ptr<const PreparedScan>& scene, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& scene_tensors,
-                         const ObjectDimensions& dims, const TensorRegistrationParams& params, TensorRegistrationReport& report);
+                         const ObjectDimensions& dims, const TensorRegistrationParams& params, TensorRegistrationReport& report,
+                         const HypothesisAcceptor& accept = {});
 
     /** \brief Automatic pairwise registration of range images with tensors (Mian, Bennamoun & Owens,
       * IJCV 2006), used like pcl::SampleConsensusPrerejective: set the scene as source and the model as

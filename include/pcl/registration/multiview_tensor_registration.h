@@ -1,0 +1,151 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#pragma once
+
+#include <pcl/registration/global_verification.h>
+#include <pcl/registration/multiview_point_to_plane_icp.h>
+#include <pcl/registration/tensor_registration.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pcl
+{
+  namespace registration
+  {
+    /** \brief One range image to register with the others. */
+    struct MultiviewInput
+    {
+      std::string name;
+      /** Points in the view's own frame (organized or not; NaN allowed). */
+      pcl::PointCloud<pcl::PointXYZ>::ConstPtr cloud;
+      /** Where the sensor was (default: looking along +z, ScanViewpoint::fromPositiveZ()). */
+      ScanViewpoint viewpoint = ScanViewpoint::fromPositiveZ ();
+    };
+
+    /** \brief The stages of multiview registration, in order (Fig. 9, modules 1-5). */
+    enum class MultiviewStage
+    {
+      PREPARATION,  ///< meshing and reduction of each view (M_i, M'_i)
+      TENSORS,      ///< tensors of each view
+      PAIRWISE,     ///< each view registered to the registered ones, with global verification
+      GLOBAL        ///< simultaneous registration of all registered views
+    };
+
+    /** \brief Name of a stage, for progress bars and reports. */
+    std::string
+    toString (MultiviewStage stage);
+
+    /** \brief Progress: \a done of \a total steps of \a stage are finished (views, or global iterations). */
+    using MultiviewProgress = std::function<void (MultiviewStage stage, std::size_t done, std::size_t total)>;
+
+    /** \brief Every parameter of multiview registration (Sections 4.2 and 5), with defaults. */
+    struct MultiviewRegistrationParams
+    {
+      /** The pairwise pipeline (Sections 2-4.1). */
+      TensorRegistrationParams pairwise;
+      /** Global verification (Section 4.2): 4 d_res on the two largest extents. */
+      GlobalVerificationParams global_verification;
+      /** A turntable set: the last view also overlaps the first, and the global step closes the loop. */
+      bool loop = false;
+      /** Registered views each new view is tried against, most recently registered first (0: all).
+        * With explicit pairs only the view's registered partners are tried. */
+      int max_references = 0;
+      /** Try every reference and keep the registration with the largest overlap, instead of the first
+        * that passes verification: slower, for unordered sets whose neighbours are not known. */
+      bool keep_best = false;
+      /** Run the global step (Section 5, module 5 of Fig. 9). */
+      bool global_registration = true;
+      /** The global step: simultaneous point-to-plane ICP over the overlapping pairs. */
+      MultiviewIcpParams global;
+      /** Besides the pairs that registration used (and the loop), the global step uses every pair
+        * of registered views that overlaps by at least this fraction under the pairwise poses (0: none). */
+      double min_overlap = 0.3;
+    };
+
+    /** \brief What happened to one view. */
+    struct ViewRegistrationStatus
+    {
+      std::string name;
+      bool registered = false;
+      /** The view it was registered to (-1: the reference view, or not registered). */
+      int reference = -1;
+      /** View -> common frame (the first registered view's frame): after the global step when it ran. */
+      Eigen::Affine3d pose = Eigen::Affine3d::Identity ();
+      /** The same pose from pairwise registration alone, before the global step. */
+      Eigen::Affine3d pairwise_pose = Eigen::Affine3d::Identity ();
+      /** The accepted pairwise registration (or the last one tried when none was accepted). */
+      TensorRegistrationReport pairwise;
+      /** References tried, and locally verified hypotheses refused by global verification over all of them. */
+      std::size_t references_tried = 0;
+      std::size_t globally_refused = 0;
+      /** max(D_L - D) in d_res of the registered views with this one added (Section 4.2). */
+      double global_excess = 0.0;
+      /** Why the view could not be used at all (empty when it could). */
+      std::string error;
+      /** M_i and M'_i of the view (null when it could not be prepared), for integration. */
+      std::shared_ptr<const PreparedScan> prepared;
+      double prepare_ms = 0.0, tensors_ms = 0.0, pairwise_ms = 0.0;
+    };
+
+    /** \brief What multiview registration did: one object for apps, JSON and the bench. */
+    struct MultiviewRegistrationResult
+    {
+      std::vector<ViewRegistrationStatus> views;
+      ObjectDimensions dimensions;  ///< D from all usable views (Eq. 1)
+      double resolution = 0.0;      ///< d_res: the mean of the usable views' fine resolutions
+      int reference = -1;           ///< the view that defines the common frame
+      ViewPairs pairs;              ///< the pairs the global step used
+      MultiviewIcpResult global;    ///< what the global step did (poses: also in views[i].pose)
+      struct Timings
+      {
+        double prepare_ms = 0.0, tensors_ms = 0.0, pairwise_ms = 0.0, global_ms = 0.0, total_ms = 0.0;
+      } timings;
+
+      std::size_t registeredCount () const;
+    };
+
+    /** \brief Automatic registration of ordered views (Mian et al., Sections 4.2 and 5; Fig. 9,
+      * modules 1-5): every view is meshed and reduced and its tensors computed once, with D from all
+      * views (Eq. 1). The first usable view defines the common frame; each further view, in order,
+      * is registered pairwise (Sections 4-4.1) to registered views, most recent first, and a locally
+      * verified registration is accepted only if all the views registered so far, with it, still fit
+      * in D + 4 d_res (global verification, Section 4.2); otherwise the next tensor match is tried
+      * (Fig. 7). A view that cannot be registered (another object, no overlap) is reported and left
+      * out; views that failed are tried again once others have been registered. Finally a global
+      * step moves all views together to spread the remaining error (Section 5; loop closure for
+      * turntables).
+      * \ingroup registration
+      */
+    class MultiviewTensorRegistration
+    {
+      public:
+        using Ptr = shared_ptr<MultiviewTensorRegistration>;
+        using ConstPtr = shared_ptr<const MultiviewTensorRegistration>;
+
+        void setParams (const MultiviewRegistrationParams& params) { params_ = params; }
+        const MultiviewRegistrationParams& getParams () const { return params_; }
+
+        /** \brief The overlapping pairs (indices into the views), when known (e.g. a pairs file);
+          * empty (default): the views are ordered, each overlapping one registered before it. */
+        void setPairs (const ViewPairs& pairs) { pairs_ = pairs; }
+        const ViewPairs& getPairs () const { return pairs_; }
+
+        void setProgressCallback (const MultiviewProgress& progress) { progress_ = progress; }
+
+        /** \brief Register the views.
+          * \throw pcl::BadArgumentException on a pair out of range or bad parameters; a view that
+          * cannot be used (too few points) is reported in its status, not thrown
+          */
+        MultiviewRegistrationResult compute (const std::vector<MultiviewInput>& views) const;
+
+      private:
+        MultiviewRegistrationParams params_;
+        ViewPairs pairs_;
+        MultiviewProgress progress_;
+    };
+  }
+}

@@ -1,0 +1,264 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#include <pcl/registration/multiview_point_to_plane_icp.h>
+#include <pcl/common/tensor_exceptions.h>
+#include <pcl/kdtree/kdtree_flann.h>
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+namespace pcl
+{
+  namespace registration
+  {
+    namespace
+    {
+      using Vector6d = Eigen::Matrix<double, 6, 1>;
+
+      /** One view's search structure, usable partners and sample. */
+      struct IcpView
+      {
+        const ScanMesh* mesh = nullptr;
+        std::shared_ptr<pcl::KdTreeFLANN<pcl::PointNormal>> tree;
+        std::vector<bool> usable;  ///< may be a partner: has a normal (and is not on the boundary)
+        std::vector<int> sample;   ///< evenly spaced usable vertices
+      };
+
+      bool
+      hasNormal (const pcl::PointNormal& p)
+      {
+        const Eigen::Vector3f n = p.getNormalVector3fMap ();
+        return n.allFinite () && n.squaredNorm () > 0.0f;
+      }
+
+      IcpView
+      makeIcpView (const ScanMesh& mesh, bool skip_boundary, int sample_points)
+      {
+        IcpView v;
+        v.mesh = &mesh;
+        v.tree = std::make_shared<pcl::KdTreeFLANN<pcl::PointNormal>> ();
+        v.tree->setInputCloud (mesh.cloud);
+        const std::vector<bool> boundary = skip_boundary ? meshBoundaryVertices (mesh) : std::vector<bool> (mesh.cloud->size (), false);
+        v.usable.resize (mesh.cloud->size ());
+        std::vector<int> candidates;
+        for (std::size_t i = 0; i < mesh.cloud->size (); ++i)
+        {
+          v.usable[i] = hasNormal ((*mesh.cloud)[i]) && !boundary[i];
+          if (v.usable[i])
+            candidates.push_back (static_cast<int> (i));
+        }
+        const std::size_t n = std::min (candidates.size (), static_cast<std::size_t> (std::max (sample_points, 1)));
+        for (std::size_t k = 0; k < n; ++k)
+          v.sample.push_back (candidates[k * candidates.size () / n]);
+        return v;
+      }
+
+      /** The normal equations of all poses together, over the unknowns of the moving views. */
+      struct JointSystem
+      {
+        Eigen::MatrixXd h;
+        Eigen::VectorXd g;
+        std::size_t pairs = 0;
+        double sum2 = 0.0;
+      };
+
+      /** Pairs sampled points of view \a a with their nearest partners on view \a b and adds their
+        * linearised point-to-plane distances. Poses are about the centre (see multiviewPointToPlaneIcp). */
+      void
+      addPairTerms (const IcpView& a, const IcpView& b, const Eigen::Affine3d& pose_a, const Eigen::Affine3d& pose_b,
+                    int var_a, int var_b, double max_distance, double min_cos, JointSystem& system)
+      {
+        const Eigen::Affine3d a_to_b = pose_b.inverse () * pose_a;
+        const double max_d2 = max_distance * max_distance;
+        pcl::Indices index (1);
+        std::vector<float> d2 (1);
+        pcl::PointNormal query;
+        for (const int s : a.sample)
+        {
+          const pcl::PointNormal& p = (*a.mesh->cloud)[s];
+          const Eigen::Vector3d p_a = p.getVector3fMap ().cast<double> ();
+          query.getVector3fMap () = (a_to_b * p_a).cast<float> ();
+          if (b.tree->nearestKSearch (query, 1, index, d2) != 1 || d2[0] > max_d2 || !b.usable[index[0]])
+            continue;
+          const pcl::PointNormal& q = (*b.mesh->cloud)[index[0]];
+          const Eigen::Vector3d n = pose_b.linear () * q.getNormalVector3fMap ().cast<double> ();
+          if ((pose_a.linear () * p.getNormalVector3fMap ().cast<double> ()).dot (n) < min_cos)
+            continue;
+          const Eigen::Vector3d x = pose_a * p_a;
+          const Eigen::Vector3d y = pose_b * q.getVector3fMap ().cast<double> ();
+          const double r = n.dot (x - y);
+          // d r / d (rotation, translation) of a small motion of each view, applied in the common frame.
+          Vector6d ja, jb;
+          ja << x.cross (n), n;
+          jb << -y.cross (n), -n;
+          const int vars[2] = {var_a, var_b};
+          const Vector6d* js[2] = {&ja, &jb};
+          for (int u = 0; u < 2; ++u)
+          {
+            if (vars[u] < 0)
+              continue;
+            system.g.segment<6> (6 * vars[u]) -= *js[u] * r;
+            for (int w = 0; w < 2; ++w)
+              if (vars[w] >= 0)
+                system.h.block<6, 6> (6 * vars[u], 6 * vars[w]).noalias () += *js[u] * js[w]->transpose ();
+          }
+          system.sum2 += r * r;
+          ++system.pairs;
+        }
+      }
+
+      Eigen::Affine3d
+      smallMotion (const Vector6d& x)
+      {
+        Eigen::Affine3d m = Eigen::Affine3d::Identity ();
+        const Eigen::Vector3d w = x.head<3> ();
+        if (w.norm () > 0.0)
+          m.linear () = Eigen::AngleAxisd (w.norm (), w.normalized ()).toRotationMatrix ();
+        m.translation () = x.tail<3> ();
+        return m;
+      }
+
+      /** The centroid of every sample in the initial common frame: the rotations of the joint
+        * system are taken about it, which keeps the system well conditioned for views whose frame
+        * origin is far from the object (a sensor's frame). */
+      Eigen::Vector3d
+      sampleCentre (const std::vector<IcpView>& views, const ViewPoses& poses)
+      {
+        Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
+        std::size_t n = 0;
+        for (std::size_t i = 0; i < views.size (); ++i)
+          for (const int s : views[i].sample)
+          {
+            sum += poses[i] * (*views[i].mesh->cloud)[s].getVector3fMap ().cast<double> ();
+            ++n;
+          }
+        return n > 0 ? Eigen::Vector3d (sum / static_cast<double> (n)) : Eigen::Vector3d::Zero ();
+      }
+    }
+
+    MultiviewIcpResult
+    multiviewPointToPlaneIcp (const std::vector<const ScanMesh*>& views, const ViewPoses& initial, const ViewPairs& pairs,
+                              int fixed, double resolution, const MultiviewIcpParams& params,
+                              const MultiviewIcpProgress& progress)
+    {
+      const int n = static_cast<int> (views.size ());
+      if (initial.size () != views.size () || fixed < 0 || fixed >= n)
+        PCL_TENSOR_THROW (BadArgumentException, "multiview ICP needs one pose per view and a fixed view among them");
+      if (!(resolution > 0.0) || !(params.max_distance > 0.0) || params.max_iterations < 0)
+        PCL_TENSOR_THROW (BadArgumentException, "multiview ICP needs a positive resolution and pairing distance");
+      std::vector<bool> in_pair (n, false);
+      for (const auto& p : pairs)
+      {
+        if (p.first < 0 || p.first >= n || p.second < 0 || p.second >= n || p.first == p.second || !views[p.first] || !views[p.second])
+          PCL_TENSOR_THROW (BadArgumentException, "multiview ICP: pair (" << p.first << ", " << p.second << ") is not a pair of two given views");
+        in_pair[p.first] = in_pair[p.second] = true;
+      }
+      // Unknowns: 6 per view that is in a pair and is not the fixed one.
+      std::vector<int> var (n, -1);
+      int unknowns = 0;
+      for (int i = 0; i < n; ++i)
+        if (in_pair[i] && i != fixed)
+          var[i] = unknowns++;
+
+      std::vector<IcpView> icp_views (n);
+      for (int i = 0; i < n; ++i)
+        if (in_pair[i])
+          icp_views[i] = makeIcpView (*views[i], params.skip_boundary, params.sample_points);
+
+      MultiviewIcpResult result;
+      result.poses = initial;
+      const Eigen::Vector3d centre = sampleCentre (icp_views, initial);
+      const Eigen::Translation3d to_centre (-centre);
+      ViewPoses centred (n);
+      for (int i = 0; i < n; ++i)
+        centred[i] = to_centre * initial[i];
+
+      const double max_distance = params.max_distance * resolution;
+      const double min_cos = std::cos (params.max_normal_angle * M_PI / 180.0);
+      for (int it = 0; it < params.max_iterations && unknowns > 0; ++it)
+      {
+        JointSystem system;
+        system.h = Eigen::MatrixXd::Zero (6 * unknowns, 6 * unknowns);
+        system.g = Eigen::VectorXd::Zero (6 * unknowns);
+        for (const auto& p : pairs)
+        {
+          const int i = p.first, j = p.second;
+          addPairTerms (icp_views[i], icp_views[j], centred[i], centred[j], var[i], var[j], max_distance, min_cos, system);
+          addPairTerms (icp_views[j], icp_views[i], centred[j], centred[i], var[j], var[i], max_distance, min_cos, system);
+        }
+        if (system.pairs == 0)
+          break;
+        const double rms = std::sqrt (system.sum2 / static_cast<double> (system.pairs));
+        if (it == 0)
+          result.rms_before = rms;
+        result.rms_after = rms;
+        result.pairs = system.pairs;
+        // A view left without pairs would make the system singular: a tiny damping keeps it still.
+        system.h.diagonal ().array () += 1e-9 * std::max (system.h.diagonal ().maxCoeff (), 1e-12);
+        const Eigen::VectorXd x = system.h.ldlt ().solve (system.g);
+        if (!x.allFinite ())
+          break;
+        double max_rotation = 0.0, max_translation = 0.0;
+        for (int i = 0; i < n; ++i)
+          if (var[i] >= 0)
+          {
+            const Vector6d xi = x.segment<6> (6 * var[i]);
+            centred[i] = smallMotion (xi) * centred[i];
+            max_rotation = std::max (max_rotation, xi.head<3> ().norm () * 180.0 / M_PI);
+            max_translation = std::max (max_translation, xi.tail<3> ().norm () / resolution);
+          }
+        result.iterations = it + 1;
+        if (progress)
+          progress (it + 1, params.max_iterations);
+        if (max_rotation < params.min_rotation && max_translation < params.min_translation)
+          break;
+      }
+      for (int i = 0; i < n; ++i)
+        result.poses[i] = Eigen::Translation3d (centre) * centred[i];
+      return result;
+    }
+
+    ViewPairs
+    findOverlappingViews (const std::vector<const ScanMesh*>& views, const ViewPoses& poses, const std::vector<bool>& use,
+                          double resolution, double max_distance, double min_fraction, int sample_points)
+    {
+      const int n = static_cast<int> (views.size ());
+      if (poses.size () != views.size () || (!use.empty () && use.size () != views.size ()))
+        PCL_TENSOR_THROW (BadArgumentException, "findOverlappingViews needs one pose (and one flag) per view");
+      std::vector<IcpView> icp_views (n);
+      for (int i = 0; i < n; ++i)
+        if (views[i] && (use.empty () || use[i]))
+          icp_views[i] = makeIcpView (*views[i], false, sample_points);
+      const double max_d2 = max_distance * resolution * max_distance * resolution;
+      ViewPairs pairs;
+      pcl::Indices index (1);
+      std::vector<float> d2 (1);
+      pcl::PointNormal query;
+      for (int i = 0; i < n; ++i)
+        for (int j = i + 1; j < n; ++j)
+        {
+          if (!icp_views[i].mesh || !icp_views[j].mesh)
+            continue;
+          // The smaller view's sample against the larger view.
+          const bool i_smaller = views[i]->cloud->size () <= views[j]->cloud->size ();
+          const IcpView& a = icp_views[i_smaller ? i : j];
+          const IcpView& b = icp_views[i_smaller ? j : i];
+          const Eigen::Affine3d a_to_b = poses[i_smaller ? j : i].inverse () * poses[i_smaller ? i : j];
+          std::size_t near = 0;
+          for (const int s : a.sample)
+          {
+            query.getVector3fMap () = (a_to_b * (*a.mesh->cloud)[s].getVector3fMap ().cast<double> ()).cast<float> ();
+            if (b.tree->nearestKSearch (query, 1, index, d2) == 1 && d2[0] <= max_d2)
+              ++near;
+          }
+          if (!a.sample.empty () && static_cast<double> (near) >= min_fraction * static_cast<double> (a.sample.size ()))
+            pairs.emplace_back (i, j);
+        }
+      return pairs;
+    }
+  }
+}

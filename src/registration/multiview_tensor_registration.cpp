@@ -1,0 +1,343 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#include <pcl/registration/multiview_tensor_registration.h>
+#include <pcl/common/tensor_exceptions.h>
+#include <pcl/common/time.h>
+
+#include <algorithm>
+#include <set>
+
+namespace pcl
+{
+  namespace registration
+  {
+    std::string
+    toString (MultiviewStage stage)
+    {
+      switch (stage)
+      {
+        case MultiviewStage::PREPARATION: return "meshing";
+        case MultiviewStage::TENSORS: return "tensors";
+        case MultiviewStage::PAIRWISE: return "pairwise";
+        case MultiviewStage::GLOBAL: return "global";
+      }
+      return "unknown";
+    }
+
+    std::size_t
+    MultiviewRegistrationResult::registeredCount () const
+    {
+      return static_cast<std::size_t> (std::count_if (views.begin (), views.end (), [] (const auto& v) { return v.registered; }));
+    }
+
+    namespace
+    {
+      using TensorsPtr = pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr;
+
+      void
+      report (const MultiviewProgress& progress, MultiviewStage stage, std::size_t done, std::size_t total)
+      {
+        if (progress)
+          progress (stage, done, total);
+      }
+
+      /** Stage 1: M_i and M'_i of every view; a view that cannot be meshed is marked and left out. */
+      void
+      prepareViews (const std::vector<MultiviewInput>& inputs, const MultiviewRegistrationParams& params,
+                    const MultiviewProgress& progress, MultiviewRegistrationResult& result)
+      {
+        for (std::size_t i = 0; i < inputs.size (); ++i)
+        {
+          ViewRegistrationStatus& view = result.views[i];
+          view.name = inputs[i].name;
+          pcl::StopWatch watch;
+          try
+          {
+            if (!inputs[i].cloud)
+              PCL_TENSOR_THROW (InvalidScanException, "the view has no cloud");
+            view.prepared = std::make_shared<const PreparedScan> (
+                prepareScan (*inputs[i].cloud, inputs[i].viewpoint, params.pairwise.preparation));
+          }
+          catch (const InvalidScanException& e)
+          {
+            view.error = e.what ();
+          }
+          view.prepare_ms = watch.getTime ();
+          report (progress, MultiviewStage::PREPARATION, i + 1, inputs.size ());
+        }
+      }
+
+      /** D from every usable view (Eq. 1) and the mean d_res. */
+      void
+      measureObject (MultiviewRegistrationResult& result)
+      {
+        std::vector<const pcl::PointCloud<pcl::PointNormal>*> fine;
+        double resolution = 0.0;
+        for (const auto& view : result.views)
+          if (view.prepared)
+          {
+            fine.push_back (view.prepared->fine.cloud.get ());
+            resolution += view.prepared->resolution;
+          }
+        if (fine.empty ())
+          return;
+        result.dimensions = computeObjectDimensions<pcl::PointNormal> (fine);
+        result.resolution = resolution / static_cast<double> (fine.size ());
+      }
+
+      /** Stage 2: each usable view's tensors, once. */
+      std::vector<TensorsPtr>
+      computeTensors (const MultiviewRegistrationParams& params, const MultiviewProgress& progress,
+                      MultiviewRegistrationResult& result)
+      {
+        std::vector<TensorsPtr> tensors (result.views.size ());
+        for (std::size_t i = 0; i < result.views.size (); ++i)
+        {
+          ViewRegistrationStatus& view = result.views[i];
+          if (view.prepared)
+          {
+            pcl::StopWatch watch;
+            try
+            {
+              tensors[i] = computeViewTensors (*view.prepared, result.dimensions, params.pairwise);
+            }
+            catch (const InvalidScanException& e)
+            {
+              view.error = e.what ();
+            }
+            view.tensors_ms = watch.getTime ();
+          }
+          report (progress, MultiviewStage::TENSORS, i + 1, result.views.size ());
+        }
+        return tensors;
+      }
+
+      /** Stage 3: the registration of views one at a time, with global verification. */
+      class OrderedRegistration
+      {
+        public:
+          OrderedRegistration (const MultiviewRegistrationParams& params, const ViewPairs& pairs,
+                               const std::vector<TensorsPtr>& tensors, MultiviewRegistrationResult& result)
+            : params_ (params), pairs_ (pairs), tensors_ (tensors), result_ (result),
+              verification_ (result.dimensions, result.resolution, params.global_verification)
+          {}
+
+          /** Registers every view it can; views that fail are retried while others get registered. */
+          void
+          run (const MultiviewProgress& progress)
+          {
+            std::vector<int> pending;
+            for (std::size_t i = 0; i < tensors_.size (); ++i)
+              if (tensors_[i])
+                pending.push_back (static_cast<int> (i));
+            if (pending.empty ())
+              return;
+            const std::size_t total = pending.size ();
+            accept (pending.front (), -1, Eigen::Affine3d::Identity ());
+            result_.reference = pending.front ();
+            pending.erase (pending.begin ());
+            report (progress, MultiviewStage::PAIRWISE, 1, total);
+            for (bool progressed = true; progressed && !pending.empty ();)
+            {
+              progressed = false;
+              for (auto it = pending.begin (); it != pending.end ();)
+              {
+                if (registerView (*it))
+                {
+                  it = pending.erase (it);
+                  progressed = true;
+                  report (progress, MultiviewStage::PAIRWISE, registered_.size (), total);
+                }
+                else
+                  ++it;
+              }
+            }
+            report (progress, MultiviewStage::PAIRWISE, total, total);
+          }
+
+        private:
+          /** Registered views to try for \a view, most recently registered first, not tried before. */
+          std::vector<int>
+          references (int view) const
+          {
+            std::vector<int> refs;
+            for (auto it = registered_.rbegin (); it != registered_.rend (); ++it)
+            {
+              const bool partner = pairs_.empty () ||
+                  std::any_of (pairs_.begin (), pairs_.end (), [&] (const auto& p) {
+                    return (p.first == view && p.second == *it) || (p.second == view && p.first == *it);
+                  });
+              if (partner && !tried_.count ({*it, view}))
+                refs.push_back (*it);
+            }
+            if (params_.max_references > 0 && refs.size () > static_cast<std::size_t> (params_.max_references))
+              refs.resize (params_.max_references);
+            return refs;
+          }
+
+          bool
+          registerView (int view)
+          {
+            ViewRegistrationStatus& status = result_.views[view];
+            const auto& scene = status.prepared;
+            pcl::StopWatch watch;
+            double best_overlap = -1.0;
+            for (const int ref : references (view))
+            {
+              tried_.insert ({ref, view});
+              ++status.references_tried;
+              const Eigen::Affine3d ref_pose = result_.views[ref].pairwise_pose;
+              double excess = 0.0;
+              const HypothesisAcceptor global = [&] (const TensorVerificationResult& local) {
+                const Eigen::Affine3d pose = ref_pose * Eigen::Affine3d (local.transform.cast<double> ());
+                excess = verification_.excess (*scene->fine.cloud, pose);
+                return excess <= params_.global_verification.tolerance;
+              };
+              TensorRegistrationReport pair;
+              registerTensorViews (result_.views[ref].prepared, tensors_[ref], scene, tensors_[view], result_.dimensions,
+                                   params_.pairwise, pair, global);
+              status.globally_refused += pair.hypotheses_refused;
+              const double overlap = pair.verification.fine_correspondences / static_cast<double> (scene->fine.cloud->size ());
+              if (pair.registered && overlap > best_overlap)
+              {
+                best_overlap = overlap;
+                status.pairwise = pair;
+                status.reference = ref;
+                status.global_excess = excess;
+                if (!params_.keep_best)
+                  break;
+              }
+              else if (best_overlap < 0.0)
+                status.pairwise = pair;
+            }
+            status.pairwise_ms += watch.getTime ();
+            if (best_overlap < 0.0)
+              return false;
+            accept (view, status.reference,
+                    result_.views[status.reference].pairwise_pose * Eigen::Affine3d (status.pairwise.transform.cast<double> ()));
+            return true;
+          }
+
+          void
+          accept (int view, int reference, const Eigen::Affine3d& pose)
+          {
+            ViewRegistrationStatus& status = result_.views[view];
+            status.registered = true;
+            status.reference = reference;
+            status.pairwise_pose = status.pose = pose;
+            verification_.addView (*status.prepared->fine.cloud, pose);
+            registered_.push_back (view);
+          }
+
+          const MultiviewRegistrationParams& params_;
+          const ViewPairs& pairs_;
+          const std::vector<TensorsPtr>& tensors_;
+          MultiviewRegistrationResult& result_;
+          GlobalVerification verification_;
+          std::vector<int> registered_;          ///< in the order they were registered
+          std::set<std::pair<int, int>> tried_;  ///< (reference, view) pairs already tried
+      };
+
+      /** The pairs of the global step: registration's own, the loop, given pairs, found overlaps. */
+      ViewPairs
+      globalPairs (const MultiviewRegistrationParams& params, const ViewPairs& given, const std::vector<const ScanMesh*>& meshes,
+                   const ViewPoses& poses, const MultiviewRegistrationResult& result)
+      {
+        std::set<std::pair<int, int>> pairs;
+        const auto add = [&] (int a, int b) {
+          if (a >= 0 && b >= 0 && a != b && result.views[a].registered && result.views[b].registered)
+            pairs.insert ({std::min (a, b), std::max (a, b)});
+        };
+        std::vector<bool> registered (result.views.size ());
+        int first = -1, last = -1;
+        for (std::size_t i = 0; i < result.views.size (); ++i)
+        {
+          registered[i] = result.views[i].registered;
+          add (static_cast<int> (i), result.views[i].reference);
+          if (registered[i])
+            (first < 0 ? first : last) = static_cast<int> (i);
+        }
+        if (params.loop)
+          add (first, last);
+        for (const auto& p : given)
+          add (p.first, p.second);
+        if (params.min_overlap > 0.0)
+          for (const auto& p : findOverlappingViews (meshes, poses, registered, result.resolution, params.global.max_distance,
+                                                     params.min_overlap))
+            add (p.first, p.second);
+        return ViewPairs (pairs.begin (), pairs.end ());
+      }
+
+      /** Stage 4: all registered views moved together (Section 5, module 5 of Fig. 9). */
+      void
+      registerGlobally (const MultiviewRegistrationParams& params, const ViewPairs& given, const MultiviewProgress& progress,
+                        MultiviewRegistrationResult& result)
+      {
+        std::vector<const ScanMesh*> meshes (result.views.size (), nullptr);
+        ViewPoses poses (result.views.size (), Eigen::Affine3d::Identity ());
+        for (std::size_t i = 0; i < result.views.size (); ++i)
+          if (result.views[i].registered)
+          {
+            meshes[i] = &result.views[i].prepared->fine;
+            poses[i] = result.views[i].pairwise_pose;
+          }
+        result.pairs = globalPairs (params, given, meshes, poses, result);
+        const std::size_t steps = static_cast<std::size_t> (std::max (params.global.max_iterations, 1));
+        if (result.pairs.empty ())
+        {
+          report (progress, MultiviewStage::GLOBAL, steps, steps);
+          return;
+        }
+        const MultiviewIcpProgress icp_progress = [&] (int it, int max_it) {
+          report (progress, MultiviewStage::GLOBAL, static_cast<std::size_t> (it), static_cast<std::size_t> (max_it));
+        };
+        result.global = multiviewPointToPlaneIcp (meshes, poses, result.pairs, result.reference, result.resolution,
+                                                  params.global, icp_progress);
+        for (std::size_t i = 0; i < result.views.size (); ++i)
+          if (result.views[i].registered)
+            result.views[i].pose = result.global.poses[i];
+        report (progress, MultiviewStage::GLOBAL, steps, steps);  // done, also when it converged early
+      }
+
+      void
+      checkPairs (const ViewPairs& pairs, std::size_t n)
+      {
+        for (const auto& p : pairs)
+          if (p.first < 0 || p.second < 0 || static_cast<std::size_t> (p.first) >= n || static_cast<std::size_t> (p.second) >= n ||
+              p.first == p.second)
+            PCL_TENSOR_THROW (BadArgumentException, "overlapping pair (" << p.first << ", " << p.second << ") is not a pair of two of the "
+                              << n << " views");
+      }
+    }
+
+    MultiviewRegistrationResult
+    MultiviewTensorRegistration::compute (const std::vector<MultiviewInput>& views) const
+    {
+      checkPairs (pairs_, views.size ());
+      pcl::StopWatch total, watch;
+      MultiviewRegistrationResult result;
+      result.views.resize (views.size ());
+      prepareViews (views, params_, progress_, result);
+      measureObject (result);
+      result.timings.prepare_ms = watch.getTime ();
+      if (result.resolution <= 0.0)
+        return result;  // no usable view: none is registered, each says why
+
+      watch.reset ();
+      const std::vector<TensorsPtr> tensors = computeTensors (params_, progress_, result);
+      result.timings.tensors_ms = watch.getTime ();
+
+      watch.reset ();
+      OrderedRegistration (params_, pairs_, tensors, result).run (progress_);
+      result.timings.pairwise_ms = watch.getTime ();
+
+      watch.reset ();
+      if (params_.global_registration)
+        registerGlobally (params_, pairs_, progress_, result);
+      result.timings.global_ms = watch.getTime ();
+      result.timings.total_ms = total.getTime ();
+      return result;
+    }
+  }
+}

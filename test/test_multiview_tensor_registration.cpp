@@ -1,0 +1,198 @@
+#include "test_utils.h"
+
+#include <pcl/common/tensor_exceptions.h>
+#include <pcl/registration/multiview_tensor_registration.h>
+#include <pcl/registration/registration_error.h>
+#include <pcl/simulation/example_object.h>
+#include <pcl/simulation/synthetic_views.h>
+#include <pcl/simulation/view_set.h>
+
+#include <algorithm>
+
+namespace
+{
+  using namespace pcl::registration;
+
+  /** A turntable: \a count views 30 degrees apart of \a object, at 300 x 300 (about 25,000 points each). */
+  std::vector<pcl::SyntheticView>
+  ringViews (const pcl::ScanMesh& object, int count)
+  {
+    pcl::SyntheticViewParams params;
+    params.camera.width = params.camera.height = 300;
+    return pcl::renderSyntheticViews (object, pcl::makeRingViewDirections (count, 30.0), params);
+  }
+
+  const std::vector<pcl::SyntheticView>&
+  exampleRing ()
+  {
+    static const std::vector<pcl::SyntheticView> views = ringViews (pcl::makeExampleObject (), 12);
+    return views;
+  }
+
+  MultiviewInput
+  inputOf (const pcl::SyntheticView& view, const std::string& name)
+  {
+    return {name, view.view.cloud, view.view.viewpoint};
+  }
+
+  /** The error of view \a i's estimated pose, with the estimate's frame put on the ground truth by
+    * the reference view's true pose. */
+  pcl::RegistrationError
+  poseError (const MultiviewRegistrationResult& result, const Eigen::Affine3d& estimate,
+             const Eigen::Affine3d& reference_truth, const Eigen::Affine3d& truth)
+  {
+    return pcl::registrationError (reference_truth * estimate, truth, result.resolution);
+  }
+
+  /** The centroid of view \a v's fine points under two poses, apart in d_res: independent of where
+    * the sensor frame's origin is (0.3 m from the object here, which magnifies Eq. 12). */
+  double
+  centroidError (const ViewRegistrationStatus& v, const Eigen::Affine3d& a, const Eigen::Affine3d& b, double resolution)
+  {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero ();
+    for (const auto& p : *v.prepared->fine.cloud)
+      c += p.getVector3fMap ().cast<double> ();
+    c /= static_cast<double> (v.prepared->fine.cloud->size ());
+    return (a * c - b * c).norm () / resolution;
+  }
+}
+
+TEST (MultiviewTensorRegistration, TurntableRingIsRegisteredWithLoopClosure)
+{
+  const auto& views = exampleRing ();
+  std::vector<MultiviewInput> inputs;
+  for (std::size_t i = 0; i < views.size (); ++i)
+    inputs.push_back (inputOf (views[i], "view" + std::to_string (i)));
+  MultiviewRegistrationParams params;
+  params.loop = true;
+  MultiviewTensorRegistration registration;
+  registration.setParams (params);
+  std::vector<std::size_t> global_steps;
+  registration.setProgressCallback ([&] (MultiviewStage stage, std::size_t done, std::size_t total) {
+    EXPECT_LE (done, total);
+    if (stage == MultiviewStage::GLOBAL)
+      global_steps.push_back (done);
+  });
+  const MultiviewRegistrationResult result = registration.compute (inputs);
+
+  ASSERT_EQ (result.registeredCount (), views.size ());
+  EXPECT_EQ (result.reference, 0);
+  EXPECT_TRUE (std::count (result.pairs.begin (), result.pairs.end (), std::make_pair (0, 11)) == 1)
+      << "the loop pair (first, last) is missing from the global step";
+  EXPECT_FALSE (global_steps.empty ());
+  EXPECT_GT (result.global.iterations, 0);
+  EXPECT_LE (result.global.rms_after, result.global.rms_before);
+  for (std::size_t i = 0; i < views.size (); ++i)
+  {
+    const auto& v = result.views[i];
+    EXPECT_TRUE (v.error.empty ());
+    EXPECT_EQ (v.globally_refused, 0u) << v.name << ": the true pose was refused by global verification";
+    EXPECT_LE (v.global_excess, params.global_verification.tolerance);
+    const auto error = poseError (result, v.pose, views[0].view.pose, views[i].view.pose);
+    const double centroid = centroidError (v, views[0].view.pose * v.pose, views[i].view.pose, result.resolution);
+    std::cout << v.name << ": rotation error " << error.rotation_deg << " deg, centroid error " << centroid
+              << " d_res, pose translation error " << error.translation_resolutions << " d_res" << std::endl;
+    EXPECT_LT (error.rotation_deg, 0.05) << v.name;
+    EXPECT_LT (centroid, 0.1) << v.name;
+    EXPECT_LT (error.translation_resolutions, 0.5) << v.name;
+  }
+  EXPECT_GT (result.timings.total_ms, 0.0);
+}
+
+TEST (MultiviewTensorRegistration, ViewOfAnotherObjectIsLeftOut)
+{
+  const auto& views = exampleRing ();
+  // Another object: a random height field (terrain) of the views' size and sampling.
+  pcl::PointCloud<pcl::PointXYZ>::Ptr terrain (
+      new pcl::PointCloud<pcl::PointXYZ> (pcl_tensor_test::makeHeightField (7, 150, 150, 0.001, 0.0)));
+  // Four neighbours on the ring, with a view of another object after the second.
+  const std::vector<MultiviewInput> inputs{inputOf (views[0], "a"), inputOf (views[1], "b"),
+                                           MultiviewInput{"other", terrain, pcl::ScanViewpoint::fromPositiveZ ()},
+                                           inputOf (views[2], "c"), inputOf (views[3], "d")};
+  MultiviewTensorRegistration registration;
+  const MultiviewRegistrationResult result = registration.compute (inputs);
+
+  EXPECT_FALSE (result.views[2].registered) << "a view of another object was registered";
+  EXPECT_TRUE (result.views[2].error.empty ()) << "the view was usable: verification must refuse it, not its input";
+  EXPECT_EQ (result.views[2].references_tried, 4u) << "it is tried against every registered view";
+  EXPECT_EQ (result.registeredCount (), 4u);
+  for (const std::size_t i : {0, 1, 3, 4})
+  {
+    const std::size_t ring = i < 2 ? i : i - 1;
+    ASSERT_TRUE (result.views[i].registered) << result.views[i].name;
+    const auto error = poseError (result, result.views[i].pose, views[0].view.pose, views[ring].view.pose);
+    EXPECT_LT (error.rotation_deg, 0.05) << result.views[i].name;
+  }
+  for (const auto& p : result.pairs)
+    EXPECT_TRUE (p.first != 2 && p.second != 2) << "the global step used the refused view: (" << p.first << ", " << p.second << ")";
+}
+
+TEST (MultiviewTensorRegistration, ExplicitPairsAreTheOnlyReferences)
+{
+  const auto& views = exampleRing ();
+  // Given in an order where view 2 comes before its only partner (view 1): it is registered on the
+  // second pass, once view 1 is.
+  const std::vector<MultiviewInput> inputs{inputOf (views[0], "v0"), inputOf (views[2], "v2"), inputOf (views[1], "v1")};
+  MultiviewTensorRegistration registration;
+  registration.setPairs ({{0, 2}, {2, 1}});
+  MultiviewRegistrationParams params;
+  params.min_overlap = 0.0;  // only the given pairs in the global step
+  registration.setParams (params);
+  const MultiviewRegistrationResult result = registration.compute (inputs);
+  ASSERT_EQ (result.registeredCount (), 3u);
+  EXPECT_EQ (result.views[2].reference, 0);
+  EXPECT_EQ (result.views[1].reference, 2);
+  EXPECT_EQ (result.views[1].references_tried, 1u);
+  EXPECT_EQ (result.pairs, (ViewPairs{{0, 2}, {1, 2}}));
+}
+
+TEST (MultiviewTensorRegistration, UnusableViewIsReportedNotThrown)
+{
+  const auto& views = exampleRing ();
+  pcl::PointCloud<pcl::PointXYZ>::Ptr empty (new pcl::PointCloud<pcl::PointXYZ>);
+  const std::vector<MultiviewInput> inputs{inputOf (views[0], "v0"), {"empty", empty, pcl::ScanViewpoint::fromPositiveZ ()},
+                                           inputOf (views[1], "v1")};
+  MultiviewTensorRegistration registration;
+  const MultiviewRegistrationResult result = registration.compute (inputs);
+  EXPECT_FALSE (result.views[1].registered);
+  EXPECT_FALSE (result.views[1].error.empty ());
+  EXPECT_TRUE (result.views[2].registered);
+
+  registration.setPairs ({{0, 3}});
+  EXPECT_THROW (registration.compute (inputs), pcl::BadArgumentException);
+}
+
+TEST (MultiviewTensorRegistration, GlobalVerificationRefusalMovesOnToTheNextMatch)
+{
+  // The hook itself: registerTensorViews() asks the acceptor about every locally verified
+  // hypothesis; one that always refuses leaves the views unregistered after trying further matches.
+  const auto& views = exampleRing ();
+  TensorRegistrationParams params;
+  const auto model = std::make_shared<const pcl::PreparedScan> (pcl::prepareScan (*views[0].view.cloud, views[0].view.viewpoint, params.preparation));
+  const auto scene = std::make_shared<const pcl::PreparedScan> (pcl::prepareScan (*views[1].view.cloud, views[1].view.viewpoint, params.preparation));
+  const auto dims = pcl::computeObjectDimensions<pcl::PointNormal> ({model->fine.cloud.get (), scene->fine.cloud.get ()});
+  const auto model_tensors = computeViewTensors (*model, dims, params);
+  const auto scene_tensors = computeViewTensors (*scene, dims, params);
+
+  std::size_t asked = 0;
+  TensorRegistrationReport accepted;
+  registerTensorViews (model, model_tensors, scene, scene_tensors, dims, params, accepted,
+                       [&] (const TensorVerificationResult& r) { ++asked; return r.passed (); });
+  ASSERT_TRUE (accepted.registered);
+  EXPECT_EQ (asked, 1u);
+  EXPECT_EQ (accepted.hypotheses_refused, 0u);
+
+  // Global verification with a D 10 d_res too small refuses the true pose and every repeat of it.
+  pcl::ObjectDimensions small = dims;
+  small.D.array () -= 10.0 * accepted.resolution;
+  GlobalVerification global (small, accepted.resolution);
+  global.addView (*model->fine.cloud, Eigen::Affine3d::Identity ());
+  TensorRegistrationReport refused;
+  registerTensorViews (model, model_tensors, scene, scene_tensors, dims, params, refused, [&] (const TensorVerificationResult& r) {
+    return global.accepts (*scene->fine.cloud, Eigen::Affine3d (r.transform.cast<double> ()));
+  });
+  EXPECT_FALSE (refused.registered);
+  EXPECT_GE (refused.hypotheses_refused, 1u);
+  EXPECT_GT (refused.hypotheses_tried, accepted.hypotheses_tried) << "no further match was tried after the refusal";
+  EXPECT_TRUE (refused.transform.isIdentity ());
+}
