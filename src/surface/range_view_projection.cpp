@@ -96,7 +96,7 @@ namespace pcl
   }
 
   RangeViewProjection::RangeViewProjection (const ScanMesh& mesh, double border_ramp_edges,
-                                            double pixels_per_resolution, std::size_t max_pixels)
+                                            double pixels_per_resolution, std::size_t max_pixels, double resolution)
   {
     if (!(border_ramp_edges > 0.0) || !(pixels_per_resolution > 0.0) || max_pixels == 0)
       PCL_TENSOR_THROW (pcl::BadArgumentException, "border ramp (" << border_ramp_edges << " edges), pixel density ("
@@ -127,7 +127,8 @@ namespace pcl
 
     // d_res on the retinal plane: metres for an orthographic sensor, d_res / median depth for a perspective one.
     std::nth_element (depths.begin (), depths.begin () + depths.size () / 2, depths.end ());
-    const double resolution = meshResolution (mesh);
+    if (!(resolution > 0.0))
+      resolution = meshResolution (mesh);
     double pixel = resolution / pixels_per_resolution / (orthographic_ ? 1.0 : depths[depths.size () / 2]);
     if (!(pixel > 0.0))
       PCL_TENSOR_THROW (InvalidScanException, "range view has no extent (d_res " << resolution << ")");

@@ -19,6 +19,9 @@ namespace pcl
     using detail::kBlockSide;
     using detail::TsdfBlockVolume;
 
+    /** Each view's z-buffer is capped at 16 Mpixels (64 MiB of triangle indices). */
+    constexpr std::size_t kMaxZBufferPixels = std::size_t (16) << 20;
+
     /** Floor division of a voxel coordinate into its block coordinate. */
     int
     blockOf (int voxel)
@@ -242,15 +245,15 @@ namespace pcl
     report_ = VolumetricIntegrationReport ();
     if (views_.empty ())
       PCL_TENSOR_THROW (InvalidScanException, "volumetric integration: no views");
-    double resolution = 0.0;
+    std::vector<double> resolutions;
     for (std::size_t i = 0; i < views_.size (); ++i)
     {
       if (!views_[i].mesh || views_[i].mesh->polygons.empty ())
         PCL_TENSOR_THROW (InvalidScanException, "volumetric integration: view " << i << " has no triangle");
-      resolution += meshResolution (*views_[i].mesh);
+      resolutions.push_back (meshResolution (*views_[i].mesh));
     }
     report_.views = views_.size ();
-    report_.resolution = resolution / static_cast<double> (views_.size ());
+    report_.resolution = std::accumulate (resolutions.begin (), resolutions.end (), 0.0) / static_cast<double> (views_.size ());
     report_.voxel_size = params_.voxel_size > 0.0 ? params_.voxel_size : params_.voxel_size_resolutions * report_.resolution;
     const float truncation = static_cast<float> (params_.truncation_voxels * report_.voxel_size);
 
@@ -264,11 +267,12 @@ namespace pcl
     report_.allocate_ms = watch.getTime ();
 
     watch.reset ();
-    for (const auto& view : views_)
+    for (std::size_t i = 0; i < views_.size (); ++i)
     {
-      const RangeViewProjection projection (*view.mesh, params_.border_ramp_edges, params_.pixels_per_resolution);
+      const RangeViewProjection projection (*views_[i].mesh, params_.border_ramp_edges, params_.pixels_per_resolution,
+                                            kMaxZBufferPixels, resolutions[i]);
       report_.peak_zbuffer_bytes = std::max (report_.peak_zbuffer_bytes, projection.memoryBytes ());
-      integrateView (projection, view.pose.inverse (), truncation, volume);
+      integrateView (projection, views_[i].pose.inverse (), truncation, volume);
     }
     for (std::size_t b = 0; b < volume.blockCount (); ++b)
       for (const auto& v : volume.block (b))

@@ -45,11 +45,13 @@ namespace pcl
         * \param[in] border_ramp_edges weights rise from 0 on the border to 1 this many edges inside (> 0)
         * \param[in] pixels_per_resolution pixels per d_res of the mesh, on the retinal plane (> 0)
         * \param[in] max_pixels the z-buffer never exceeds this many pixels (coarser pixels instead)
+        * \param[in] resolution d_res of the mesh if already known (meshResolution()); 0 computes it
         * \throw InvalidScanException when the mesh has no triangle with a finite projection
         * \throw pcl::BadArgumentException on a non-positive ramp or pixel density
         */
       RangeViewProjection (const ScanMesh& mesh, double border_ramp_edges = 3.0,
-                           double pixels_per_resolution = 2.0, std::size_t max_pixels = 16u << 20);
+                           double pixels_per_resolution = 2.0, std::size_t max_pixels = 16u << 20,
+                           double resolution = 0.0);
 
       /** \brief The surface along the line of sight through \a p (scan frame).
         * \param[in] p a point in the mesh's scan frame
