@@ -189,12 +189,13 @@ namespace pcl
 
       const double lo_u = std::min ({u[0], u[1], u[2]}), hi_u = std::max ({u[0], u[1], u[2]});
       const double lo_v = std::min ({v[0], v[1], v[2]}), hi_v = std::max ({v[0], v[1], v[2]});
-      const int c0 = std::max (0, static_cast<int> (std::ceil ((lo_u - u0_) * inv_pixel_ - 0.5)));
-      const int c1 = std::min (width_ - 1, static_cast<int> (std::floor ((hi_u - u0_) * inv_pixel_ - 0.5)));
-      const int r0 = std::max (0, static_cast<int> (std::ceil ((lo_v - v0_) * inv_pixel_ - 0.5)));
-      const int r1 = std::min (height_ - 1, static_cast<int> (std::floor ((hi_v - v0_) * inv_pixel_ - 0.5)));
+      // Pixel centres in the bounding box, rounded outward: the inside test below decides.
+      const int c0 = std::max (0, static_cast<int> (std::floor ((lo_u - u0_) * inv_pixel_ - 0.5)));
+      const int c1 = std::min (width_ - 1, static_cast<int> (std::ceil ((hi_u - u0_) * inv_pixel_ - 0.5)));
+      const int r0 = std::max (0, static_cast<int> (std::floor ((lo_v - v0_) * inv_pixel_ - 0.5)));
+      const int r1 = std::min (height_ - 1, static_cast<int> (std::ceil ((hi_v - v0_) * inv_pixel_ - 0.5)));
       // Barycentric inside test with a little slack so that shared edges leave no crack.
-      const double eps = -1e-7;
+      const double eps = -1e-4;
       for (int r = r0; r <= r1; ++r)
       {
         const double pv = v0_ + (r + 0.5) * pixel - v[0];
