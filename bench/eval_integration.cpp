@@ -82,7 +82,7 @@ namespace
 
   /** The fraction of the reference's vertices with no scan point (at its pose) within \a radius_res d_res. */
   double
-  unseenFraction (const std::vector<pcl::RegisteredView>& views, const pcl::ScanMesh& reference, double radius_res)
+  unseenFraction (const std::vector<pcl::IntegrationView>& views, const pcl::ScanMesh& reference, double radius_res)
   {
     pcl::PointCloud<pcl::PointXYZ>::Ptr all (new pcl::PointCloud<pcl::PointXYZ>);
     double resolution = 0.0;
@@ -90,9 +90,11 @@ namespace
     {
       resolution += pcl::meshResolution (*v.mesh) / views.size ();
       for (const auto& p : *v.mesh->cloud)
-        all->push_back (pcl::PointXYZ ((v.pose * p.getVector3fMap ().cast<double> ()).cast<float> ().eval ()[0],
-                                       (v.pose * p.getVector3fMap ().cast<double> ()).cast<float> ().eval ()[1],
-                                       (v.pose * p.getVector3fMap ().cast<double> ()).cast<float> ().eval ()[2]));
+      {
+        pcl::PointXYZ q;
+        q.getVector3fMap () = (v.pose * p.getVector3fMap ().cast<double> ()).cast<float> ();
+        all->push_back (q);
+      }
     }
     pcl::KdTreeFLANN<pcl::PointXYZ> tree;
     tree.setInputCloud (all);
@@ -151,7 +153,7 @@ main (int argc, char** argv)
     const double load_ms = watch.getTime ();
 
     watch.reset ();
-    std::vector<pcl::RegisteredView> views;
+    std::vector<pcl::IntegrationView> views;
     std::size_t points = 0;
     for (const auto& s : scans)
     {

@@ -23,7 +23,7 @@ namespace
   };
 
   /** The view of \a sphere from \a sensor_pose (sensor -> world) as a registered fine mesh M_i. */
-  pcl::RegisteredView
+  pcl::IntegrationView
   sphereView (const Sphere& sphere, const Eigen::Affine3d& sensor_pose, const pcl::RangeCameraParams& camera)
   {
     pcl::ZBufferRangeRenderer renderer;
@@ -56,12 +56,12 @@ namespace
     return {mesh, sensor_pose};
   }
 
-  std::vector<pcl::RegisteredView>
+  std::vector<pcl::IntegrationView>
   sphereViews (const Sphere& sphere, const pcl::ViewDirections& directions, const pcl::RangeCameraParams& camera)
   {
     const pcl::ViewTarget target{sphere.centre, sphere.radius};
     const double distance = pcl::fittingDistance (target, camera);
-    std::vector<pcl::RegisteredView> views;
+    std::vector<pcl::IntegrationView> views;
     for (const auto& pose : pcl::lookAtPoses (directions, target, distance))
       views.push_back (sphereView (sphere, pose, camera));
     return views;
@@ -189,7 +189,7 @@ TEST (ScanVolumetricIntegration, BadInputIsRefused)
   pcl::ScanVolumetricIntegration integration;
   pcl::ScanMesh model;
   EXPECT_THROW (integration.reconstruct (model), pcl::InvalidScanException);
-  integration.setInputViews ({pcl::RegisteredView ()});
+  integration.setInputViews ({pcl::IntegrationView ()});
   EXPECT_THROW (integration.reconstruct (model), pcl::InvalidScanException);
   EXPECT_THROW (integration.setVoxelSize (-1.0), pcl::BadArgumentException);
   pcl::VolumetricIntegrationParams params;
@@ -203,7 +203,7 @@ TEST (ScanVolumetricIntegration, ExampleObjectFromItsSyntheticViews)
 {
   const pcl::ScanMesh object = pcl::makeExampleObject ();
   const auto rendered = pcl::renderSyntheticViews (object, pcl::makeDefaultViewDirections (), pcl::SyntheticViewParams ());
-  std::vector<pcl::RegisteredView> views;
+  std::vector<pcl::IntegrationView> views;
   for (const auto& v : rendered)
   {
     pcl::RangeScanTriangulation triangulation;

@@ -33,7 +33,7 @@ namespace pcl
       * band of a view lies within truncation of its surface. Consecutive triangles of a scan mostly
       * fall in the same blocks, so a repeated block range is skipped. */
     void
-    reserveBlocks (const std::vector<RegisteredView>& views, double margin, TsdfBlockVolume& volume)
+    reserveBlocks (const std::vector<IntegrationView>& views, double margin, TsdfBlockVolume& volume)
     {
       const double inv = 1.0 / volume.voxelSize ();
       for (const auto& view : views)

@@ -19,7 +19,7 @@ namespace pcl
     * aliasing constructor, e.g. ScanMesh::ConstPtr (prepared, &prepared->fine).
     * \ingroup surface
     */
-  struct RegisteredView
+  struct IntegrationView
   {
     /** The view's triangle mesh in its scan frame; never null when integrated. */
     ScanMesh::ConstPtr mesh;
@@ -107,8 +107,8 @@ namespace pcl
       std::size_t getMaxMemoryBytes () const { return params_.max_memory_bytes; }
 
       /** \brief Set the views to integrate. */
-      void setInputViews (const std::vector<RegisteredView>& views) { views_ = views; }
-      const std::vector<RegisteredView>& getInputViews () const { return views_; }
+      void setInputViews (const std::vector<IntegrationView>& views) { views_ = views; }
+      const std::vector<IntegrationView>& getInputViews () const { return views_; }
 
       /** \brief Integrate the views and extract the surface in the world frame.
         * \param[out] model vertices with outward normals, and triangles; viewpoint left at its default
@@ -125,7 +125,7 @@ namespace pcl
 
     private:
       VolumetricIntegrationParams params_;
-      std::vector<RegisteredView> views_;
+      std::vector<IntegrationView> views_;
       VolumetricIntegrationReport report_;
   };
 }
