@@ -29,6 +29,21 @@ namespace pcl
       {}
   };
 
+  /** \brief Thrown when a computation would need more memory than its configured limit (e.g. a voxel
+    * grid too fine for the object); nothing large has been allocated when it is thrown.
+    * \ingroup common
+    */
+  class MemoryLimitException : public PCLException
+  {
+    public:
+      explicit MemoryLimitException (const std::string& error_description,
+                                     const char* file_name = nullptr,
+                                     const char* function_name = nullptr,
+                                     unsigned line_number = 0)
+        : PCLException (error_description, file_name, function_name, line_number)
+      {}
+  };
+
   /** \brief The description of an exception without the ": " that pcl::PCLException puts before it
     * when no file name is given; for one-line messages in the apps.
     */

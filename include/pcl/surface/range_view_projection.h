@@ -1,0 +1,109 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#pragma once
+
+#include <pcl/common/scan_mesh.h>
+#include <Eigen/Geometry>
+
+#include <cstdint>
+#include <vector>
+
+namespace pcl
+{
+  /** \brief One range view seen along its sensor's lines of sight: a z-buffer of the view's triangle
+    * mesh M_i in the sensor frame, answering "where along this line of sight is the surface, and how
+    * much is it trusted" for any point in space. It is the per-view half of Curless & Levoy's
+    * volumetric integration (SIGGRAPH 1996), used by ScanVolumetricIntegration.
+    *
+    * Every pixel keeps the nearest triangle whose projection covers its centre. A query point is
+    * projected to its pixel and the line of sight through the point itself (not the pixel centre) is
+    * intersected with that triangle's plane, so the answer is exact on the triangle and does not
+    * depend on the pixel size, which only decides which triangle answers.
+    *
+    * Weights follow Curless & Levoy: each vertex is weighted by the cosine between its normal
+    * (area-weighted face normals, computed from the geometry) and its line of sight, times a ramp
+    * that rises from 0 on the mesh's border to 1 at \a border_ramp_edges edges inside it, and the
+    * weight is interpolated linearly across each triangle.
+    * \ingroup surface
+    */
+  class RangeViewProjection
+  {
+    public:
+      /** \brief Where a query point lies relative to the view's surface. */
+      struct Sample
+      {
+        /** Range of the surface along the point's line of sight minus the point's range: > 0 in
+          * front of the surface (the sensor's side), < 0 behind it. */
+        float distance = 0.0f;
+        /** The surface's weight at the hit (0..1). */
+        float weight = 0.0f;
+      };
+
+      /** \brief Build the z-buffer of \a mesh, seen by its own viewpoint.
+        * \param[in] mesh the view's fine mesh M_i in its scan frame, with its viewpoint
+        * \param[in] border_ramp_edges weights rise from 0 on the border to 1 this many edges inside (> 0)
+        * \param[in] pixels_per_resolution pixels per d_res of the mesh, on the retinal plane (> 0)
+        * \param[in] max_pixels the z-buffer never exceeds this many pixels (coarser pixels instead)
+        * \param[in] resolution d_res of the mesh if already known (meshResolution()); 0 computes it
+        * \throw InvalidScanException when the mesh has no triangle with a finite projection
+        * \throw pcl::BadArgumentException on a non-positive ramp or pixel density
+        */
+      RangeViewProjection (const ScanMesh& mesh, double border_ramp_edges = 3.0,
+                           double pixels_per_resolution = 2.0, std::size_t max_pixels = 16u << 20,
+                           double resolution = 0.0);
+
+      /** \brief The surface along the line of sight through \a p (scan frame).
+        * \param[in] p a point in the mesh's scan frame
+        * \param[out] sample signed range difference and weight
+        * \return false when the line of sight through \a p meets no triangle (unseen)
+        */
+      bool sample (const Eigen::Vector3f& p, Sample& sample) const;
+
+      /** \brief The same for a point already in the sensor frame (see getScanToSensor()). */
+      bool sampleSensor (const Eigen::Vector3f& s, Sample& sample) const;
+
+      /** \brief Smallest and largest sensor-frame depth of the surface over the pixels a sensor-frame
+        * box projects to; false when no covered pixel is there. Lets a caller skip whole regions.
+        * \param[in] lo, hi opposite corners of an axis-aligned box in the sensor frame
+        * \param[out] min_depth, max_depth the depth range (sensor z) of the surface seen there
+        */
+      bool depthRange (const Eigen::Vector3f& lo, const Eigen::Vector3f& hi, float& min_depth, float& max_depth) const;
+
+      /** \brief The transform from the scan frame into the sensor frame (inverse of the viewpoint's pose). */
+      const Eigen::Affine3f& getScanToSensor () const { return scan_to_sensor_; }
+
+      /** \brief Width and height of the z-buffer in pixels. */
+      int getWidth () const { return width_; }
+      int getHeight () const { return height_; }
+
+      /** \brief Bytes held by the z-buffer and the triangle table. */
+      std::size_t memoryBytes () const;
+
+    private:
+      /** A triangle as affine functions of the retinal coordinates (u, v): the depth term (z for an
+        * orthographic sensor, 1/z for a perspective one, both affine in (u, v) on a plane) and the weight. */
+      struct Plane
+      {
+        float u, v;        ///< retinal coordinates of the triangle's first corner
+        float d0, du, dv;  ///< depth term there, and its slopes
+        float w0, wu, wv;  ///< weight there, and its slopes
+      };
+
+      void rasterize (const std::vector<Eigen::Vector3f>& sensor_points, const std::vector<float>& weights,
+                      const std::vector<pcl::Vertices>& polygons);
+      void buildTiles ();
+      bool pixelOf (float u, float v, int& col, int& row) const;
+      float surfaceDepth (const Plane& plane, float u, float v) const;
+
+      Eigen::Affine3f scan_to_sensor_ = Eigen::Affine3f::Identity ();
+      bool orthographic_ = false;
+      float u0_ = 0.0f, v0_ = 0.0f, inv_pixel_ = 1.0f;
+      int width_ = 0, height_ = 0;
+      std::vector<std::int32_t> triangle_;  ///< per pixel, row-major: index into planes_, or -1
+      std::vector<Plane> planes_;
+      /** Per tile of kTile x kTile pixels: smallest and largest surface depth (sensor z). */
+      std::vector<float> tile_min_, tile_max_;
+      int tiles_x_ = 0, tiles_y_ = 0;
+  };
+}

@@ -1,0 +1,337 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#include <pcl/surface/range_view_projection.h>
+#include <pcl/common/tensor_exceptions.h>
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <unordered_map>
+
+namespace pcl
+{
+  namespace
+  {
+    /** Pixels per side of a depth-range tile. */
+    constexpr int kTile = 8;
+
+    /** Hop count from each vertex to the nearest vertex on a border edge (an edge of one triangle);
+      * vertices that no border reaches get the largest int. */
+    std::vector<int>
+    borderHops (std::size_t vertex_count, const std::vector<pcl::Vertices>& polygons)
+    {
+      std::unordered_map<std::uint64_t, int> edge_uses;
+      edge_uses.reserve (polygons.size () * 3);
+      auto key = [] (std::uint32_t a, std::uint32_t b) {
+        return (static_cast<std::uint64_t> (std::min (a, b)) << 32) | std::max (a, b);
+      };
+      std::vector<std::vector<std::uint32_t>> neighbours (vertex_count);
+      for (const auto& poly : polygons)
+        for (int k = 0; k < 3; ++k)
+        {
+          const std::uint32_t a = poly.vertices[k], b = poly.vertices[(k + 1) % 3];
+          if (++edge_uses[key (a, b)] == 1)
+          {
+            neighbours[a].push_back (b);
+            neighbours[b].push_back (a);
+          }
+        }
+      std::vector<int> hops (vertex_count, std::numeric_limits<int>::max ());
+      std::deque<std::uint32_t> queue;
+      for (const auto& e : edge_uses)
+        if (e.second == 1)
+          for (const std::uint32_t v : {static_cast<std::uint32_t> (e.first >> 32), static_cast<std::uint32_t> (e.first)})
+            if (hops[v] != 0)
+            {
+              hops[v] = 0;
+              queue.push_back (v);
+            }
+      while (!queue.empty ())
+      {
+        const std::uint32_t v = queue.front ();
+        queue.pop_front ();
+        for (const std::uint32_t n : neighbours[v])
+          if (hops[n] > hops[v] + 1)
+          {
+            hops[n] = hops[v] + 1;
+            queue.push_back (n);
+          }
+      }
+      return hops;
+    }
+
+    /** Curless & Levoy's per-vertex weight: cosine between the vertex normal and its line of sight,
+      * times a ramp from 0 on the border to 1 at \a ramp_edges hops inside. Face normals are turned
+      * toward the sensor before averaging, so the triangles' winding does not matter. */
+    std::vector<float>
+    vertexWeights (const std::vector<Eigen::Vector3f>& s, const std::vector<pcl::Vertices>& polygons,
+                   bool orthographic, double ramp_edges)
+    {
+      std::vector<Eigen::Vector3f> normals (s.size (), Eigen::Vector3f::Zero ());
+      for (const auto& poly : polygons)
+      {
+        const Eigen::Vector3f& a = s[poly.vertices[0]];
+        Eigen::Vector3f n = (s[poly.vertices[1]] - a).cross (s[poly.vertices[2]] - a);  // |n| = 2 area
+        const Eigen::Vector3f toward = orthographic ? Eigen::Vector3f (-Eigen::Vector3f::UnitZ ()) : Eigen::Vector3f (-a);
+        if (n.dot (toward) < 0.0f)
+          n = -n;
+        for (int k = 0; k < 3; ++k)
+          normals[poly.vertices[k]] += n;
+      }
+      const std::vector<int> hops = borderHops (s.size (), polygons);
+      std::vector<float> weights (s.size (), 0.0f);
+      for (std::size_t i = 0; i < s.size (); ++i)
+      {
+        const float n = normals[i].norm ();
+        if (!(n > 0.0f))
+          continue;
+        const Eigen::Vector3f toward = orthographic ? Eigen::Vector3f (-Eigen::Vector3f::UnitZ ()) : Eigen::Vector3f (-s[i].normalized ());
+        const double ramp = std::min (1.0, static_cast<double> (hops[i]) / ramp_edges);
+        weights[i] = static_cast<float> (std::max (0.0f, normals[i].dot (toward) / n) * ramp);
+      }
+      return weights;
+    }
+  }
+
+  RangeViewProjection::RangeViewProjection (const ScanMesh& mesh, double border_ramp_edges,
+                                            double pixels_per_resolution, std::size_t max_pixels, double resolution)
+  {
+    if (!(border_ramp_edges > 0.0) || !(pixels_per_resolution > 0.0) || max_pixels == 0)
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "border ramp (" << border_ramp_edges << " edges), pixel density ("
+                        << pixels_per_resolution << " per d_res) and pixel limit must be positive");
+    orthographic_ = mesh.viewpoint.orthographic;
+    scan_to_sensor_ = mesh.viewpoint.sensor_pose.inverse ().cast<float> ();
+
+    std::vector<Eigen::Vector3f> s (mesh.cloud->size ());
+    for (std::size_t i = 0; i < s.size (); ++i)
+      s[i] = scan_to_sensor_ * (*mesh.cloud)[i].getVector3fMap ();
+
+    // The image covers the projections of the vertices a triangle uses (in front of a perspective sensor).
+    float umin = std::numeric_limits<float>::max (), vmin = umin, umax = -umin, vmax = -umin;
+    std::vector<float> depths;
+    for (const auto& poly : mesh.polygons)
+      for (const auto idx : poly.vertices)
+      {
+        const Eigen::Vector3f& p = s[idx];
+        if (!orthographic_ && !(p.z () > 0.0f))
+          continue;
+        const float u = orthographic_ ? p.x () : p.x () / p.z (), v = orthographic_ ? p.y () : p.y () / p.z ();
+        umin = std::min (umin, u), umax = std::max (umax, u);
+        vmin = std::min (vmin, v), vmax = std::max (vmax, v);
+        depths.push_back (p.z ());
+      }
+    if (depths.empty () || !(umax >= umin) || !(vmax >= vmin))
+      PCL_TENSOR_THROW (InvalidScanException, "range view has no triangle in front of its sensor");
+
+    // d_res on the retinal plane: metres for an orthographic sensor, d_res / median depth for a perspective one.
+    std::nth_element (depths.begin (), depths.begin () + depths.size () / 2, depths.end ());
+    if (!(resolution > 0.0))
+      resolution = meshResolution (mesh);
+    double pixel = resolution / pixels_per_resolution / (orthographic_ ? 1.0 : depths[depths.size () / 2]);
+    if (!(pixel > 0.0))
+      PCL_TENSOR_THROW (InvalidScanException, "range view has no extent (d_res " << resolution << ")");
+    const double cells = ((umax - umin) / pixel + 2.0) * ((vmax - vmin) / pixel + 2.0);
+    if (cells > static_cast<double> (max_pixels))
+      pixel *= std::sqrt (cells / static_cast<double> (max_pixels));
+    u0_ = umin - static_cast<float> (pixel) * 0.5f;
+    v0_ = vmin - static_cast<float> (pixel) * 0.5f;
+    inv_pixel_ = static_cast<float> (1.0 / pixel);
+    width_ = static_cast<int> ((umax - u0_) * inv_pixel_) + 2;
+    height_ = static_cast<int> ((vmax - v0_) * inv_pixel_) + 2;
+
+    rasterize (s, vertexWeights (s, mesh.polygons, orthographic_, border_ramp_edges), mesh.polygons);
+    buildTiles ();
+  }
+
+  void
+  RangeViewProjection::rasterize (const std::vector<Eigen::Vector3f>& s, const std::vector<float>& weights,
+                                  const std::vector<pcl::Vertices>& polygons)
+  {
+    triangle_.assign (static_cast<std::size_t> (width_) * height_, -1);
+    std::vector<float> zbuf (triangle_.size (), std::numeric_limits<float>::max ());
+    planes_.clear ();
+    planes_.reserve (polygons.size ());
+    const double pixel = 1.0 / inv_pixel_;
+    for (const auto& poly : polygons)
+    {
+      double u[3], v[3], g[3], w[3];
+      bool valid = true;
+      for (int k = 0; k < 3; ++k)
+      {
+        const Eigen::Vector3f& p = s[poly.vertices[k]];
+        valid = valid && (orthographic_ || p.z () > 0.0f);
+        u[k] = orthographic_ ? p.x () : p.x () / static_cast<double> (p.z ());
+        v[k] = orthographic_ ? p.y () : p.y () / static_cast<double> (p.z ());
+        g[k] = orthographic_ ? p.z () : 1.0 / static_cast<double> (p.z ());
+        w[k] = weights[poly.vertices[k]];
+      }
+      const double eu1 = u[1] - u[0], ev1 = v[1] - v[0], eu2 = u[2] - u[0], ev2 = v[2] - v[0];
+      const double det = eu1 * ev2 - eu2 * ev1;
+      // Edge-on triangles cover no pixel centre reliably and their plane is ill-defined.
+      if (!valid || !(std::abs (det) > 1e-6 * pixel * pixel))
+        continue;
+      // Affine functions through the three corners, relative to corner 0 for float precision.
+      auto slopes = [&] (const double* f, float& fu, float& fv) {
+        fu = static_cast<float> (((f[1] - f[0]) * ev2 - (f[2] - f[0]) * ev1) / det);
+        fv = static_cast<float> ((eu1 * (f[2] - f[0]) - eu2 * (f[1] - f[0])) / det);
+      };
+      Plane plane;
+      plane.u = static_cast<float> (u[0]);
+      plane.v = static_cast<float> (v[0]);
+      plane.d0 = static_cast<float> (g[0]);
+      plane.w0 = static_cast<float> (w[0]);
+      slopes (g, plane.du, plane.dv);
+      slopes (w, plane.wu, plane.wv);
+      const std::int32_t id = static_cast<std::int32_t> (planes_.size ());
+      planes_.push_back (plane);
+
+      const double lo_u = std::min ({u[0], u[1], u[2]}), hi_u = std::max ({u[0], u[1], u[2]});
+      const double lo_v = std::min ({v[0], v[1], v[2]}), hi_v = std::max ({v[0], v[1], v[2]});
+      // Pixel centres in the bounding box, rounded outward: the inside test below decides.
+      const int c0 = std::max (0, static_cast<int> (std::floor ((lo_u - u0_) * inv_pixel_ - 0.5)));
+      const int c1 = std::min (width_ - 1, static_cast<int> (std::ceil ((hi_u - u0_) * inv_pixel_ - 0.5)));
+      const int r0 = std::max (0, static_cast<int> (std::floor ((lo_v - v0_) * inv_pixel_ - 0.5)));
+      const int r1 = std::min (height_ - 1, static_cast<int> (std::ceil ((hi_v - v0_) * inv_pixel_ - 0.5)));
+      // Barycentric inside test with a little slack so that shared edges leave no crack.
+      const double eps = -1e-4;
+      for (int r = r0; r <= r1; ++r)
+      {
+        const double pv = v0_ + (r + 0.5) * pixel - v[0];
+        for (int c = c0; c <= c1; ++c)
+        {
+          const double pu = u0_ + (c + 0.5) * pixel - u[0];
+          const double b1 = (pu * ev2 - eu2 * pv) / det, b2 = (eu1 * pv - pu * ev1) / det;
+          if (b1 < eps || b2 < eps || 1.0 - b1 - b2 < eps)
+            continue;
+          const double gp = g[0] + b1 * (g[1] - g[0]) + b2 * (g[2] - g[0]);
+          const float z = static_cast<float> (orthographic_ ? gp : 1.0 / gp);
+          const std::size_t cell = static_cast<std::size_t> (r) * width_ + c;
+          if (z < zbuf[cell])
+          {
+            zbuf[cell] = z;
+            triangle_[cell] = id;
+          }
+        }
+      }
+    }
+  }
+
+  void
+  RangeViewProjection::buildTiles ()
+  {
+    tiles_x_ = (width_ + kTile - 1) / kTile;
+    tiles_y_ = (height_ + kTile - 1) / kTile;
+    tile_min_.assign (static_cast<std::size_t> (tiles_x_) * tiles_y_, std::numeric_limits<float>::max ());
+    tile_max_.assign (tile_min_.size (), -std::numeric_limits<float>::max ());
+    const float pixel = 1.0f / inv_pixel_;
+    for (int r = 0; r < height_; ++r)
+      for (int c = 0; c < width_; ++c)
+      {
+        const std::int32_t id = triangle_[static_cast<std::size_t> (r) * width_ + c];
+        if (id < 0)
+          continue;
+        // The depth range covers the whole pixel, since queries are answered off the pixel centre.
+        const Plane& plane = planes_[id];
+        const std::size_t tile = static_cast<std::size_t> (r / kTile) * tiles_x_ + c / kTile;
+        for (const float du : {0.0f, 1.0f})
+          for (const float dv : {0.0f, 1.0f})
+          {
+            const float z = surfaceDepth (plane, u0_ + (c + du) * pixel, v0_ + (r + dv) * pixel);
+            tile_min_[tile] = std::min (tile_min_[tile], z);
+            tile_max_[tile] = std::max (tile_max_[tile], z);
+          }
+      }
+  }
+
+  bool
+  RangeViewProjection::pixelOf (float u, float v, int& col, int& row) const
+  {
+    const float fc = (u - u0_) * inv_pixel_, fr = (v - v0_) * inv_pixel_;
+    if (!(fc >= 0.0f && fr >= 0.0f && fc < static_cast<float> (width_) && fr < static_cast<float> (height_)))
+      return false;
+    col = static_cast<int> (fc);
+    row = static_cast<int> (fr);
+    return true;
+  }
+
+  float
+  RangeViewProjection::surfaceDepth (const Plane& plane, float u, float v) const
+  {
+    const float g = plane.d0 + plane.du * (u - plane.u) + plane.dv * (v - plane.v);
+    return orthographic_ ? g : 1.0f / g;
+  }
+
+  bool
+  RangeViewProjection::sample (const Eigen::Vector3f& p, Sample& sample) const
+  {
+    return sampleSensor (scan_to_sensor_ * p, sample);
+  }
+
+  bool
+  RangeViewProjection::sampleSensor (const Eigen::Vector3f& s, Sample& out) const
+  {
+    if (!orthographic_ && !(s.z () > 0.0f))
+      return false;
+    const float u = orthographic_ ? s.x () : s.x () / s.z (), v = orthographic_ ? s.y () : s.y () / s.z ();
+    int col, row;
+    if (!pixelOf (u, v, col, row))
+      return false;
+    const std::int32_t id = triangle_[static_cast<std::size_t> (row) * width_ + col];
+    if (id < 0)
+      return false;
+    const Plane& plane = planes_[id];
+    const float z = surfaceDepth (plane, u, v);
+    if (!(z > 0.0f) && !orthographic_)
+      return false;
+    // Along a perspective line of sight, range = depth * |s| / s.z.
+    out.distance = orthographic_ ? z - s.z () : (z - s.z ()) * s.norm () / s.z ();
+    out.weight = std::min (1.0f, std::max (0.0f, plane.w0 + plane.wu * (u - plane.u) + plane.wv * (v - plane.v)));
+    return true;
+  }
+
+  bool
+  RangeViewProjection::depthRange (const Eigen::Vector3f& lo, const Eigen::Vector3f& hi, float& min_depth,
+                                   float& max_depth) const
+  {
+    int c0 = 0, c1 = tiles_x_ - 1, r0 = 0, r1 = tiles_y_ - 1;
+    // A box reaching behind a perspective sensor projects unboundedly: answer for the whole image.
+    if (orthographic_ || lo.z () > 0.0f)
+    {
+      float umin = std::numeric_limits<float>::max (), vmin = umin, umax = -umin, vmax = -umin;
+      for (int k = 0; k < 8; ++k)
+      {
+        const Eigen::Vector3f p ((k & 1) ? hi.x () : lo.x (), (k & 2) ? hi.y () : lo.y (), (k & 4) ? hi.z () : lo.z ());
+        const float u = orthographic_ ? p.x () : p.x () / p.z (), v = orthographic_ ? p.y () : p.y () / p.z ();
+        umin = std::min (umin, u), umax = std::max (umax, u);
+        vmin = std::min (vmin, v), vmax = std::max (vmax, v);
+      }
+      const float fc0 = (umin - u0_) * inv_pixel_, fc1 = (umax - u0_) * inv_pixel_;
+      const float fr0 = (vmin - v0_) * inv_pixel_, fr1 = (vmax - v0_) * inv_pixel_;
+      if (fc1 < 0.0f || fr1 < 0.0f || fc0 >= static_cast<float> (width_) || fr0 >= static_cast<float> (height_))
+        return false;
+      c0 = std::max (0, static_cast<int> (fc0)) / kTile;
+      c1 = std::min (width_ - 1, static_cast<int> (fc1)) / kTile;
+      r0 = std::max (0, static_cast<int> (fr0)) / kTile;
+      r1 = std::min (height_ - 1, static_cast<int> (fr1)) / kTile;
+    }
+    min_depth = std::numeric_limits<float>::max ();
+    max_depth = -std::numeric_limits<float>::max ();
+    for (int r = r0; r <= r1; ++r)
+      for (int c = c0; c <= c1; ++c)
+      {
+        const std::size_t tile = static_cast<std::size_t> (r) * tiles_x_ + c;
+        min_depth = std::min (min_depth, tile_min_[tile]);
+        max_depth = std::max (max_depth, tile_max_[tile]);
+      }
+    return min_depth <= max_depth;
+  }
+
+  std::size_t
+  RangeViewProjection::memoryBytes () const
+  {
+    return triangle_.size () * sizeof (std::int32_t) + planes_.size () * sizeof (Plane)
+         + (tile_min_.size () + tile_max_.size ()) * sizeof (float);
+  }
+}

@@ -1,0 +1,302 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#include <pcl/surface/scan_volumetric_integration.h>
+#include <pcl/common/tensor_exceptions.h>
+#include <pcl/common/time.h>
+#include <pcl/surface/range_view_projection.h>
+
+#include "tsdf_block_volume.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace pcl
+{
+  namespace
+  {
+    using detail::kBlockSide;
+    using detail::TsdfBlockVolume;
+
+    /** Each view's z-buffer is capped at 16 Mpixels (64 MiB of triangle indices). */
+    constexpr std::size_t kMaxZBufferPixels = std::size_t (16) << 20;
+
+    /** Floor division of a voxel coordinate into its block coordinate. */
+    int
+    blockOf (int voxel)
+    {
+      return voxel >= 0 ? voxel / kBlockSide : -((-voxel + kBlockSide - 1) / kBlockSide);
+    }
+
+    /** Register every block within \a margin (metres) of a triangle of any view: the signed distance
+      * band of a view lies within truncation of its surface. Consecutive triangles of a scan mostly
+      * fall in the same blocks, so a repeated block range is skipped. */
+    void
+    reserveBlocks (const std::vector<IntegrationView>& views, double margin, TsdfBlockVolume& volume)
+    {
+      const double inv = 1.0 / volume.voxelSize ();
+      for (const auto& view : views)
+      {
+        const auto& cloud = *view.mesh->cloud;
+        const Eigen::Affine3d& pose = view.pose;
+        std::vector<Eigen::Vector3d> world (cloud.size ());
+        for (std::size_t i = 0; i < cloud.size (); ++i)
+          world[i] = pose * cloud[i].getVector3fMap ().cast<double> ();
+        Eigen::Vector3i last_lo (1, 1, 1), last_hi (0, 0, 0);
+        for (const auto& poly : view.mesh->polygons)
+        {
+          Eigen::Vector3d lo = world[poly.vertices[0]], hi = lo;
+          for (int k = 1; k < 3; ++k)
+          {
+            lo = lo.cwiseMin (world[poly.vertices[k]]);
+            hi = hi.cwiseMax (world[poly.vertices[k]]);
+          }
+          Eigen::Vector3i blo, bhi;
+          for (int k = 0; k < 3; ++k)
+          {
+            const double a = std::floor ((lo[k] - margin) * inv), b = std::ceil ((hi[k] + margin) * inv);
+            // Out-of-range coordinates are refused by reserveBlock; clamp before converting to int.
+            const double limit = 2.0 * TsdfBlockVolume::kMaxBlockCoordinate * kBlockSide;
+            blo[k] = blockOf (static_cast<int> (std::max (-limit, std::min (limit, a))));
+            bhi[k] = blockOf (static_cast<int> (std::max (-limit, std::min (limit, b))));
+          }
+          if (blo == last_lo && bhi == last_hi)
+            continue;
+          last_lo = blo;
+          last_hi = bhi;
+          for (int z = blo.z (); z <= bhi.z (); ++z)
+            for (int y = blo.y (); y <= bhi.y (); ++y)
+              for (int x = blo.x (); x <= bhi.x (); ++x)
+                volume.reserveBlock (Eigen::Vector3i (x, y, z));
+        }
+      }
+    }
+
+    /** Curless & Levoy's weight behind the surface: full up to half the truncation, then falling
+      * linearly to 0 at the truncation, so that a thin part's far side is not pulled by the near one. */
+    float
+    behindTaper (float distance, float truncation)
+    {
+      return distance >= -0.5f * truncation ? 1.0f : std::max (0.0f, 2.0f * (1.0f + distance / truncation));
+    }
+
+    /** Add one view's truncated signed distances to the voxels near its surface. Whole blocks are
+      * skipped when the z-buffer says every voxel is more than the truncation from the surface. */
+    void
+    integrateView (const RangeViewProjection& projection, const Eigen::Affine3d& world_to_scan, float truncation,
+                   TsdfBlockVolume& volume)
+    {
+      const Eigen::Affine3f world_to_sensor = projection.getScanToSensor () * world_to_scan.cast<float> ();
+      const float s = static_cast<float> (volume.voxelSize ());
+      const Eigen::Matrix3f step = world_to_sensor.linear () * s;
+      for (std::size_t b = 0; b < volume.blockCount (); ++b)
+      {
+        const Eigen::Vector3f origin = world_to_sensor * (volume.blockCoordinates (b).cast<float> () * (kBlockSide * s));
+        // The block's corner voxels in the sensor frame bound all its voxels.
+        Eigen::Vector3f lo = origin, hi = origin;
+        for (int k = 1; k < 8; ++k)
+        {
+          const Eigen::Vector3f c = origin + step * (Eigen::Vector3f ((k & 1), (k >> 1) & 1, (k >> 2) & 1) * (kBlockSide - 1));
+          lo = lo.cwiseMin (c);
+          hi = hi.cwiseMax (c);
+        }
+        float min_depth, max_depth;
+        if (!projection.depthRange (lo, hi, min_depth, max_depth))
+          continue;
+        // Along a line of sight the range difference is at least the depth difference.
+        if (lo.z () > max_depth + truncation || hi.z () < min_depth - truncation)
+          continue;
+        detail::TsdfBlock& block = volume.block (b);
+        RangeViewProjection::Sample sample;
+        int i = 0;
+        for (int z = 0; z < kBlockSide; ++z)
+          for (int y = 0; y < kBlockSide; ++y)
+          {
+            Eigen::Vector3f p = origin + step.col (1) * static_cast<float> (y) + step.col (2) * static_cast<float> (z);
+            for (int x = 0; x < kBlockSide; ++x, ++i, p += step.col (0))
+            {
+              if (!projection.sampleSensor (p, sample) || sample.distance > truncation || sample.distance < -truncation)
+                continue;
+              const float w = sample.weight * behindTaper (sample.distance, truncation);
+              if (!(w > 0.0f))
+                continue;
+              detail::TsdfVoxel& v = block[i];
+              const float total = v.weight + w;
+              v.distance = (v.distance * v.weight + sample.distance * w) / total;
+              v.weight = total;
+            }
+          }
+      }
+    }
+
+    /** Union-find root with path halving. */
+    std::uint32_t
+    findRoot (std::vector<std::uint32_t>& parent, std::uint32_t v)
+    {
+      while (parent[v] != v)
+        v = parent[v] = parent[parent[v]];
+      return v;
+    }
+
+    /** Drop the connected pieces with fewer than \a min_fraction of all triangles; returns the number
+      * of pieces found and records those removed. */
+    std::size_t
+    removeSmallComponents (std::size_t vertex_count, std::vector<Eigen::Vector3i>& triangles, double min_fraction,
+                           VolumetricIntegrationReport& report)
+    {
+      std::vector<std::uint32_t> parent (vertex_count);
+      std::iota (parent.begin (), parent.end (), 0u);
+      for (const auto& t : triangles)
+        for (int k = 1; k < 3; ++k)
+        {
+          const std::uint32_t a = findRoot (parent, t[0]), b = findRoot (parent, t[k]);
+          if (a != b)
+            parent[std::max (a, b)] = std::min (a, b);
+        }
+      std::vector<std::size_t> size (vertex_count, 0);
+      for (const auto& t : triangles)
+        ++size[findRoot (parent, t[0])];
+      std::size_t components = 0;
+      const double min_triangles = min_fraction * static_cast<double> (triangles.size ());
+      for (std::size_t v = 0; v < vertex_count; ++v)
+        if (size[v] > 0)
+        {
+          ++components;
+          if (static_cast<double> (size[v]) < min_triangles)
+          {
+            ++report.removed_components;
+            report.removed_triangles += size[v];
+          }
+        }
+      triangles.erase (std::remove_if (triangles.begin (), triangles.end (),
+                                       [&] (const Eigen::Vector3i& t) {
+                                         return static_cast<double> (size[findRoot (parent, t[0])]) < min_triangles;
+                                       }),
+                       triangles.end ());
+      return components;
+    }
+
+    /** The mesh with only the vertices that triangles use, and area-weighted vertex normals. */
+    void
+    buildModel (const std::vector<Eigen::Vector3f>& vertices, const std::vector<Eigen::Vector3i>& triangles, ScanMesh& model)
+    {
+      std::vector<std::int64_t> remap (vertices.size (), -1);
+      model.cloud.reset (new pcl::PointCloud<pcl::PointNormal>);
+      model.polygons.clear ();
+      model.polygons.reserve (triangles.size ());
+      std::vector<Eigen::Vector3f> normals;
+      for (const auto& t : triangles)
+      {
+        pcl::Vertices poly;
+        poly.vertices.resize (3);
+        for (int k = 0; k < 3; ++k)
+        {
+          if (remap[t[k]] < 0)
+          {
+            remap[t[k]] = static_cast<std::int64_t> (model.cloud->size ());
+            pcl::PointNormal p;
+            p.getVector3fMap () = vertices[t[k]];
+            p.curvature = 0.0f;
+            model.cloud->push_back (p);
+            normals.emplace_back (Eigen::Vector3f::Zero ());
+          }
+          poly.vertices[k] = static_cast<pcl::index_t> (remap[t[k]]);
+        }
+        const Eigen::Vector3f n = (vertices[t[1]] - vertices[t[0]]).cross (vertices[t[2]] - vertices[t[0]]);
+        for (int k = 0; k < 3; ++k)
+          normals[poly.vertices[k]] += n;
+        model.polygons.push_back (std::move (poly));
+      }
+      for (std::size_t i = 0; i < normals.size (); ++i)
+        (*model.cloud)[i].getNormalVector3fMap () = normals[i].normalized ();
+    }
+  }
+
+  void
+  ScanVolumetricIntegration::setParams (const VolumetricIntegrationParams& params)
+  {
+    if (!(params.voxel_size >= 0.0) || !(params.voxel_size_resolutions > 0.0) || !(params.truncation_voxels > 0.0)
+        || !(params.border_ramp_edges > 0.0) || !(params.pixels_per_resolution > 0.0)
+        || !(params.min_component_fraction >= 0.0 && params.min_component_fraction < 1.0))
+      PCL_TENSOR_THROW (pcl::BadArgumentException,
+                        "volumetric integration: voxel size must be >= 0, the relative voxel size, truncation, border "
+                        "ramp and pixel density > 0, the component fraction in [0, 1)");
+    params_ = params;
+  }
+
+  void
+  ScanVolumetricIntegration::setVoxelSize (double size)
+  {
+    VolumetricIntegrationParams p = params_;
+    p.voxel_size = size;
+    setParams (p);
+  }
+
+  void
+  ScanVolumetricIntegration::setMaxMemoryBytes (std::size_t bytes)
+  {
+    params_.max_memory_bytes = bytes;
+  }
+
+  void
+  ScanVolumetricIntegration::reconstruct (ScanMesh& model)
+  {
+    report_ = VolumetricIntegrationReport ();
+    if (views_.empty ())
+      PCL_TENSOR_THROW (InvalidScanException, "volumetric integration: no views");
+    std::vector<double> resolutions;
+    for (std::size_t i = 0; i < views_.size (); ++i)
+    {
+      if (!views_[i].mesh || views_[i].mesh->polygons.empty ())
+        PCL_TENSOR_THROW (InvalidScanException, "volumetric integration: view " << i << " has no triangle");
+      resolutions.push_back (meshResolution (*views_[i].mesh));
+    }
+    report_.views = views_.size ();
+    report_.resolution = std::accumulate (resolutions.begin (), resolutions.end (), 0.0) / static_cast<double> (views_.size ());
+    report_.voxel_size = params_.voxel_size > 0.0 ? params_.voxel_size : params_.voxel_size_resolutions * report_.resolution;
+    const float truncation = static_cast<float> (params_.truncation_voxels * report_.voxel_size);
+
+    pcl::StopWatch watch;
+    TsdfBlockVolume volume (report_.voxel_size, params_.max_memory_bytes / TsdfBlockVolume::bytesPerBlock ());
+    reserveBlocks (views_, truncation + report_.voxel_size, volume);
+    volume.allocate ();
+    report_.blocks = volume.blockCount ();
+    report_.voxels = report_.blocks * detail::kBlockVoxels;
+    report_.volume_bytes = volume.memoryBytes ();
+    report_.allocate_ms = watch.getTime ();
+
+    watch.reset ();
+    for (std::size_t i = 0; i < views_.size (); ++i)
+    {
+      const RangeViewProjection projection (*views_[i].mesh, params_.border_ramp_edges, params_.pixels_per_resolution,
+                                            kMaxZBufferPixels, resolutions[i]);
+      report_.peak_zbuffer_bytes = std::max (report_.peak_zbuffer_bytes, projection.memoryBytes ());
+      integrateView (projection, views_[i].pose.inverse (), truncation, volume);
+    }
+    for (std::size_t b = 0; b < volume.blockCount (); ++b)
+      for (const auto& v : volume.block (b))
+        report_.observed_voxels += v.weight > 0.0f ? 1 : 0;
+    report_.integrate_ms = watch.getTime ();
+
+    watch.reset ();
+    std::vector<Eigen::Vector3f> vertices;
+    std::vector<Eigen::Vector3i> triangles;
+    detail::extractZeroSet (volume, vertices, triangles);
+    report_.extract_ms = watch.getTime ();
+
+    watch.reset ();
+    report_.components = removeSmallComponents (vertices.size (), triangles, params_.min_component_fraction, report_);
+    buildModel (vertices, triangles, model);
+    model.viewpoint = ScanViewpoint ();
+    report_.cleanup_ms = watch.getTime ();
+  }
+
+  void
+  ScanVolumetricIntegration::reconstruct (pcl::PolygonMesh& model)
+  {
+    ScanMesh mesh;
+    reconstruct (mesh);
+    toPolygonMesh (mesh, model);
+  }
+}

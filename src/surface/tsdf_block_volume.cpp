@@ -1,0 +1,192 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#include "tsdf_block_volume.h"
+
+#include <pcl/common/tensor_exceptions.h>
+#include <pcl/surface/marching_cubes.h>  // pcl::edgeTable, pcl::triTable (Bourke's tables)
+
+#include <cstdlib>
+
+namespace pcl
+{
+  namespace detail
+  {
+    namespace
+    {
+      /** Cube corners in pcl::MarchingCubes' order, which its tables assume. */
+      const int kCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}, {0, 1, 0}, {1, 1, 0}, {1, 1, 1}, {0, 1, 1}};
+      /** The corners joined by each of the twelve cube edges. */
+      const int kEdge[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+
+      int
+      voxelIndex (int x, int y, int z)
+      {
+        return x + kBlockSide * (y + kBlockSide * z);
+      }
+
+      /** One block and its seven neighbours on the +x, +y, +z sides, for the cubes that cross into them. */
+      struct BlockNeighbourhood
+      {
+        std::array<int, 8> index;  ///< block indices by (dx | dy << 1 | dz << 2), -1 when absent
+      };
+
+      /** The welded vertex on the edge from voxel (block a, local la) to its +axis neighbour. */
+      class EdgeVertices
+      {
+        public:
+          EdgeVertices (std::vector<Eigen::Vector3f>& vertices) : vertices_ (vertices) {}
+
+          std::uint32_t
+          get (std::uint64_t key, const Eigen::Vector3f& position)
+          {
+            const auto inserted = map_.emplace (key, static_cast<std::uint32_t> (vertices_.size ()));
+            if (inserted.second)
+              vertices_.push_back (position);
+            return inserted.first->second;
+          }
+
+          void reserve (std::size_t n) { map_.reserve (n); }
+
+        private:
+          std::vector<Eigen::Vector3f>& vertices_;
+          std::unordered_map<std::uint64_t, std::uint32_t> map_;
+      };
+    }
+
+    std::uint64_t
+    TsdfBlockVolume::key (const Eigen::Vector3i& block)
+    {
+      const std::uint64_t mask = (std::uint64_t (1) << 21) - 1;
+      return (static_cast<std::uint64_t> (block.x ()) & mask) | ((static_cast<std::uint64_t> (block.y ()) & mask) << 21)
+           | ((static_cast<std::uint64_t> (block.z ()) & mask) << 42);
+    }
+
+    std::size_t
+    TsdfBlockVolume::bytesPerBlock ()
+    {
+      // The voxels, the block's coordinates and an unordered_map node with its bucket.
+      return sizeof (TsdfBlock) + sizeof (Eigen::Vector3i) + 48;
+    }
+
+    void
+    TsdfBlockVolume::reserveBlock (const Eigen::Vector3i& block)
+    {
+      if (block.cwiseAbs ().maxCoeff () > kMaxBlockCoordinate)
+        PCL_TENSOR_THROW (MemoryLimitException, "volumetric integration: the views span more than "
+                          << kMaxBlockCoordinate << " blocks of " << kBlockSide << " voxels of " << voxel_size_
+                          << " m from the origin; use larger voxels");
+      const auto inserted = index_.emplace (key (block), static_cast<std::uint32_t> (keys_.size ()));
+      if (!inserted.second)
+        return;
+      if (keys_.size () >= max_blocks_)
+        PCL_TENSOR_THROW (MemoryLimitException, "volumetric integration: more than " << max_blocks_ << " voxel blocks ("
+                          << max_blocks_ * bytesPerBlock () / (1 << 20) << " MiB) are needed at a voxel size of "
+                          << voxel_size_ << " m; use larger voxels or raise the memory limit");
+      keys_.push_back (block);
+    }
+
+    void
+    TsdfBlockVolume::allocate ()
+    {
+      blocks_.assign (keys_.size (), TsdfBlock ());
+    }
+
+    const TsdfBlock*
+    TsdfBlockVolume::find (const Eigen::Vector3i& block) const
+    {
+      const auto it = index_.find (key (block));
+      return it == index_.end () || it->second >= blocks_.size () ? nullptr : &blocks_[it->second];
+    }
+
+    std::size_t
+    TsdfBlockVolume::memoryBytes () const
+    {
+      return keys_.size () * bytesPerBlock () + index_.bucket_count () * sizeof (void*);
+    }
+
+    void
+    extractZeroSet (const TsdfBlockVolume& volume, std::vector<Eigen::Vector3f>& vertices,
+                    std::vector<Eigen::Vector3i>& triangles)
+    {
+      vertices.clear ();
+      triangles.clear ();
+      EdgeVertices welded (vertices);
+      const float s = static_cast<float> (volume.voxelSize ());
+      std::vector<const TsdfBlock*> by_index (volume.blockCount ());
+      for (std::size_t b = 0; b < volume.blockCount (); ++b)
+        by_index[b] = &volume.block (b);
+      auto indexOf = [&] (const TsdfBlock* block) {
+        return block == nullptr ? -1 : static_cast<int> (block - &volume.block (0));
+      };
+
+      for (std::size_t b = 0; b < volume.blockCount (); ++b)
+      {
+        const Eigen::Vector3i origin = volume.blockCoordinates (b);
+        BlockNeighbourhood hood;
+        for (int n = 0; n < 8; ++n)
+          hood.index[n] = n == 0 ? static_cast<int> (b)
+                                 : indexOf (volume.find (origin + Eigen::Vector3i (n & 1, (n >> 1) & 1, (n >> 2) & 1)));
+        for (int z = 0; z < kBlockSide; ++z)
+          for (int y = 0; y < kBlockSide; ++y)
+            for (int x = 0; x < kBlockSide; ++x)
+            {
+              // The eight corners: which block holds each, its voxel there, and its local position.
+              float value[8];
+              int corner_block[8], corner_voxel[8];
+              int cube = 0;
+              bool seen = true;
+              for (int c = 0; c < 8 && seen; ++c)
+              {
+                const int px = x + kCorner[c][0], py = y + kCorner[c][1], pz = z + kCorner[c][2];
+                const int n = (px >> 3) | ((py >> 3) << 1) | ((pz >> 3) << 2);
+                corner_block[c] = hood.index[n];
+                if (corner_block[c] < 0)
+                {
+                  seen = false;
+                  break;
+                }
+                corner_voxel[c] = voxelIndex (px & 7, py & 7, pz & 7);
+                const TsdfVoxel& v = (*by_index[corner_block[c]])[corner_voxel[c]];
+                seen = v.weight > 0.0f;
+                value[c] = v.distance;
+                if (value[c] < 0.0f)
+                  cube |= 1 << c;
+              }
+              if (!seen || pcl::edgeTable[cube] == 0)
+                continue;
+
+              std::uint32_t edge_vertex[12];
+              for (int e = 0; e < 12; ++e)
+              {
+                if (!(pcl::edgeTable[cube] & (1u << e)))
+                  continue;
+                // Key the edge by its lower corner (block and voxel) and its axis, so neighbours share it.
+                int a = kEdge[e][0], bc = kEdge[e][1];
+                int axis = 0;
+                while (kCorner[a][axis] == kCorner[bc][axis])
+                  ++axis;
+                const int lower = kCorner[a][axis] < kCorner[bc][axis] ? a : bc;
+                const std::uint64_t key = (static_cast<std::uint64_t> (corner_block[lower]) * kBlockVoxels
+                                           + static_cast<std::uint64_t> (corner_voxel[lower])) * 3 + axis;
+                const float t = value[a] / (value[a] - value[bc]);
+                Eigen::Vector3f p;
+                for (int k = 0; k < 3; ++k)
+                  p[k] = s * (static_cast<float> (origin[k] * kBlockSide + (k == 0 ? x : k == 1 ? y : z) + kCorner[a][k])
+                              + t * static_cast<float> (kCorner[bc][k] - kCorner[a][k]));
+                edge_vertex[e] = welded.get (key, p);
+              }
+              for (int i = 0; pcl::triTable[cube][i] != -1; i += 3)
+              {
+                const Eigen::Vector3i tri (static_cast<int> (edge_vertex[pcl::triTable[cube][i]]),
+                                           static_cast<int> (edge_vertex[pcl::triTable[cube][i + 1]]),
+                                           static_cast<int> (edge_vertex[pcl::triTable[cube][i + 2]]));
+                // A corner value of exactly 0 can weld two corners of a triangle into one vertex.
+                if (tri[0] != tri[1] && tri[1] != tri[2] && tri[0] != tri[2])
+                  triangles.push_back (tri);
+              }
+            }
+      }
+    }
+  }
+}
