@@ -1,0 +1,278 @@
+/*
+ * pcl_tensor_model: range images in, one 3D model out (Mian et al., 2006, Section 5 and Fig. 9):
+ * every view registered automatically, global verification and registration, then volumetric
+ * integration and marching cubes.
+ */
+#include "progress_bar.h"
+#include "tool_main.h"
+
+#include <pcl/common/tensor_exceptions.h>
+#include <pcl/console/parse.h>
+#include <pcl/console/print.h>
+#include <pcl/console/time.h>
+#include <pcl/io/ply_io.h>
+#include <pcl/io/range_scan_io.h>
+#include <pcl/io/stanford_conf.h>
+#include <pcl/io/view_pairs_io.h>
+#include <pcl/registration/multiview_tensor_registration.h>
+#include <pcl/surface/scan_volumetric_integration.h>
+
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+using namespace pcl::console;
+
+namespace
+{
+  constexpr int kExitModelled = 0;
+  constexpr int kExitNotAllRegistered = 3;
+
+  void
+  printHelp (const char* name)
+  {
+    const pcl::registration::MultiviewRegistrationParams m;
+    const pcl::VolumetricIntegrationParams v;
+    print_info ("Build a 3D model from range images, registered automatically with tensors\n"
+                "(Mian, Bennamoun & Owens, IJCV 2006), then integrated volumetrically (Curless & Levoy, 1996).\n\n");
+    print_info ("Usage: %s VIEW.{ply,pcd}... -o model.ply [--conf poses.conf] [--pairs FILE] [--loop]\n"
+                "       [--voxel SIZE] [--json] [options]\n\n", name);
+    print_info ("Views are given in an order where each overlaps one before it, or with --pairs.\n");
+    print_info ("  -o FILE            the model (binary PLY mesh with normals); required\n");
+    print_info ("  --conf FILE        the estimated poses, Stanford .conf style (default: the model's name with .conf)\n");
+    print_info ("  --pairs FILE       overlapping pairs, one \"A B\" per line (file names or 0-based indices)\n");
+    print_info ("  --loop             a turntable: the last view overlaps the first (closes the loop)\n");
+    print_info ("  --references N     registered views each new view is tried against, newest first, 0 = all (default %d)\n", m.max_references);
+    print_info ("  --no-global        skip the global registration step\n");
+    print_info ("  --voxel SIZE       voxel edge in the scans' units (default: %g d_res)\n", v.voxel_size_resolutions);
+    print_info ("  --voxel-res K      voxel edge in d_res, when --voxel is not given (default %g)\n", v.voxel_size_resolutions);
+    print_info ("  --max-memory MB    refuse a voxel volume larger than this (default %zu)\n", v.max_memory_bytes >> 20);
+    print_info ("  --faces N          faces per reduced mesh (default %d)\n", m.pairwise.preparation.target_faces);
+    print_info ("  --viewpoint x,y,z  perspective sensor at x,y,z looking at each scan (default: file pose; +z for PLY)\n");
+    print_info ("  --json             print a JSON summary instead of text\n");
+    print_info ("Exit codes: 0 every view registered and the model written; 3 some views could not be registered\n"
+                "(the model is built from the others and the refused views are named on stderr); 2 bad input or usage.\n");
+  }
+
+  struct ModelOptions
+  {
+    std::vector<std::string> views;
+    std::string output, conf, pairs;
+    bool json = false;
+    pcl::registration::MultiviewRegistrationParams registration;
+    pcl::VolumetricIntegrationParams integration;
+  };
+
+  std::vector<std::string>
+  viewFiles (int argc, char** argv, const std::vector<std::string>& outputs)
+  {
+    std::vector<int> files = parse_file_extension_argument (argc, argv, ".ply");
+    const std::vector<int> pcds = parse_file_extension_argument (argc, argv, ".pcd");
+    files.insert (files.end (), pcds.begin (), pcds.end ());
+    std::sort (files.begin (), files.end ());
+    std::vector<std::string> views;
+    for (const int i : files)
+      if (std::find (outputs.begin (), outputs.end (), argv[i]) == outputs.end ())
+        views.emplace_back (argv[i]);
+    return views;
+  }
+
+  ModelOptions
+  parseOptions (int argc, char** argv)
+  {
+    ModelOptions o;
+    parse_argument (argc, argv, "-o", o.output);
+    if (o.output.empty ())
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "-o model.ply is required; see --help");
+    o.conf = o.output.substr (0, o.output.find_last_of ('.')) + ".conf";
+    parse_argument (argc, argv, "--conf", o.conf);
+    parse_argument (argc, argv, "--pairs", o.pairs);
+    o.views = viewFiles (argc, argv, {o.output, o.conf});
+    if (o.views.size () < 2)
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "expected at least two VIEW files (.ply or .pcd); see --help");
+    o.json = find_switch (argc, argv, "--json");
+    o.registration.loop = find_switch (argc, argv, "--loop");
+    o.registration.global_registration = !find_switch (argc, argv, "--no-global");
+    parse_argument (argc, argv, "--references", o.registration.max_references);
+    parse_argument (argc, argv, "--faces", o.registration.pairwise.preparation.target_faces);
+    double voxel = 0.0;
+    if (parse_argument (argc, argv, "--voxel", voxel) >= 0 && !(voxel > 0.0))
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "--voxel must be positive, got " << voxel);
+    o.integration.voxel_size = voxel;
+    parse_argument (argc, argv, "--voxel-res", o.integration.voxel_size_resolutions);
+    unsigned int megabytes = 0;
+    if (parse_argument (argc, argv, "--max-memory", megabytes) >= 0)
+      o.integration.max_memory_bytes = std::size_t (megabytes) << 20;
+    return o;
+  }
+
+  std::vector<pcl::registration::MultiviewInput>
+  loadViews (const std::vector<std::string>& files, int argc, char** argv)
+  {
+    std::vector<pcl::registration::MultiviewInput> views;
+    for (const auto& file : files)
+    {
+      pcl::io::RangeScan scan = pcl::io::loadRangeScan (file);
+      pcl::registration::MultiviewInput view;
+      view.name = file;
+      view.viewpoint = scan.viewpoint;
+      pcl_tensor_tools::parseViewpoint (argc, argv, *scan.cloud, view.viewpoint);
+      view.cloud = scan.cloud;
+      views.push_back (std::move (view));
+    }
+    return views;
+  }
+
+  std::string
+  baseName (const std::string& path)
+  {
+    const auto slash = path.find_last_of ("/\\");
+    return slash == std::string::npos ? path : path.substr (slash + 1);
+  }
+
+  /** The registered views as the integration takes them: M_i in its own frame, and its pose. */
+  std::vector<pcl::IntegrationView>
+  registeredViews (const pcl::registration::MultiviewRegistrationResult& result)
+  {
+    std::vector<pcl::IntegrationView> views;
+    for (const auto& v : result.views)
+      if (v.registered && v.prepared)
+      {
+        pcl::IntegrationView r;
+        r.mesh = pcl::ScanMesh::ConstPtr (v.prepared, &v.prepared->fine);
+        r.pose = v.pose;
+        views.push_back (r);
+      }
+    return views;
+  }
+
+  void
+  saveConf (const std::string& path, const pcl::registration::MultiviewRegistrationResult& result)
+  {
+    std::vector<pcl::io::StanfordConfEntry> entries;
+    for (const auto& v : result.views)
+      if (v.registered)
+        entries.push_back (pcl::io::StanfordConfEntry::fromPose (baseName (v.name), v.pose));
+    pcl::io::saveStanfordConf (path, entries);
+  }
+
+  struct StageTimes
+  {
+    double load_ms = 0.0, integration_ms = 0.0, write_ms = 0.0, total_ms = 0.0;
+  };
+
+  std::string
+  jsonSummary (const ModelOptions& o, const pcl::registration::MultiviewRegistrationResult& r,
+               const pcl::VolumetricIntegrationReport& integration, const pcl::ScanMesh& model, const StageTimes& t)
+  {
+    std::ostringstream s;
+    s << std::setprecision (9) << "{\"model\": \"" << o.output << "\", \"conf\": \"" << o.conf << "\", \"views\": [";
+    for (std::size_t i = 0; i < r.views.size (); ++i)
+    {
+      const auto& v = r.views[i];
+      s << (i ? ", " : "") << "{\"file\": \"" << v.name << "\", \"status\": \"" << (v.registered ? "registered" : "not_registered")
+        << "\", \"reference\": " << v.reference << ", \"pose\": [";
+      for (int k = 0; k < 16; ++k)
+        s << (k ? ", " : "") << v.pose.matrix () (k / 4, k % 4);
+      s << "], \"hypotheses_tried\": " << v.pairwise.hypotheses_tried << ", \"globally_refused\": " << v.globally_refused;
+      if (!v.error.empty ())
+        s << ", \"error\": \"" << v.error << "\"";
+      s << "}";
+    }
+    s << "], \"registered\": " << r.registeredCount () << ", \"resolution\": " << r.resolution
+      << ", \"global\": {\"iterations\": " << r.global.iterations << ", \"rms_before\": " << r.global.rms_before
+      << ", \"rms_after\": " << r.global.rms_after << "}"
+      << ", \"volume\": {\"voxel_size\": " << integration.voxel_size << ", \"voxels\": " << integration.voxels
+      << ", \"bytes\": " << integration.volume_bytes << "}"
+      << ", \"mesh\": {\"vertices\": " << model.cloud->size () << ", \"triangles\": " << model.polygons.size () << "}"
+      << ", \"timings_ms\": {\"load\": " << t.load_ms << ", \"meshing\": " << r.timings.prepare_ms
+      << ", \"tensors\": " << r.timings.tensors_ms << ", \"pairwise\": " << r.timings.pairwise_ms
+      << ", \"global\": " << r.timings.global_ms << ", \"integration\": " << t.integration_ms
+      << ", \"write\": " << t.write_ms << ", \"total\": " << t.total_ms << "}}";
+    return s.str ();
+  }
+
+  void
+  printText (const pcl::registration::MultiviewRegistrationResult& r, const pcl::ScanMesh& model, const StageTimes& t,
+             const ModelOptions& o)
+  {
+    print_info ("Registered "); print_value ("%zu", r.registeredCount ()); print_info (" of ");
+    print_value ("%zu", r.views.size ()); print_info (" views; model of "); print_value ("%zu", model.polygons.size ());
+    print_info (" triangles written to "); print_value ("%s", o.output.c_str ()); print_info (", poses to ");
+    print_value ("%s", o.conf.c_str ()); print_info ("\n");
+    print_info ("Times (ms): load %.0f, meshing %.0f, tensors %.0f, pairwise %.0f, global %.0f, integration %.0f, "
+                "write %.0f, total %.0f\n", t.load_ms, r.timings.prepare_ms, r.timings.tensors_ms, r.timings.pairwise_ms,
+                r.timings.global_ms, t.integration_ms, t.write_ms, t.total_ms);
+  }
+
+  /** One line on stderr per view that is not in the model, saying why. */
+  std::size_t
+  reportRefusedViews (const pcl::registration::MultiviewRegistrationResult& r)
+  {
+    std::size_t refused = 0;
+    for (const auto& v : r.views)
+      if (!v.registered && static_cast<int> (&v - r.views.data ()) != r.reference)
+      {
+        ++refused;
+        std::cerr << "pcl_tensor_model: not registered: " << v.name << ": "
+                  << (v.error.empty () ? "no hypothesis passed local and global verification" : v.error) << std::endl;
+      }
+    return refused;
+  }
+
+  int
+  run (int argc, char** argv)
+  {
+    const ModelOptions o = parseOptions (argc, argv);
+    if (o.json)
+      setVerbosityLevel (L_ALWAYS);
+    TicToc total, timer;
+    total.tic ();
+    StageTimes t;
+    pcl_tensor_tools::ProgressBar progress;
+
+    timer.tic ();
+    const auto inputs = loadViews (o.views, argc, argv);
+    t.load_ms = timer.toc ();
+    pcl::registration::MultiviewTensorRegistration registration;
+    registration.setParams (o.registration);
+    if (!o.pairs.empty ())
+      registration.setPairs (pcl::io::loadViewPairs (o.pairs, o.views));
+    registration.setProgressCallback ([&progress] (pcl::registration::MultiviewStage stage, std::size_t done, std::size_t n) {
+      progress.update (pcl::registration::toString (stage), done, n);
+    });
+    const auto result = registration.compute (inputs);
+
+    timer.tic ();
+    progress.update ("integration", 0, 1);
+    pcl::ScanVolumetricIntegration integration;
+    integration.setParams (o.integration);
+    integration.setInputViews (registeredViews (result));
+    pcl::ScanMesh model;
+    integration.reconstruct (model);
+    progress.update ("integration", 1, 1);
+    progress.finish ();
+    t.integration_ms = timer.toc ();
+
+    timer.tic ();
+    pcl::PolygonMesh mesh;
+    pcl::toPolygonMesh (model, mesh);
+    if (pcl::io::savePLYFileBinary (o.output, mesh) < 0)
+      PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << o.output << "'");
+    saveConf (o.conf, result);
+    t.write_ms = timer.toc ();
+    t.total_ms = total.toc ();
+
+    if (o.json)
+      std::cout << jsonSummary (o, result, integration.getReport (), model, t) << std::endl;
+    else
+      printText (result, model, t, o);
+    return reportRefusedViews (result) > 0 ? kExitNotAllRegistered : kExitModelled;
+  }
+}
+
+int
+main (int argc, char** argv)
+{
+  return pcl_tensor_tools::toolMain ("pcl_tensor_model", argc, argv, printHelp, run);
+}
