@@ -17,6 +17,7 @@
 #include <pcl/registration/multiview_tensor_registration.h>
 #include <pcl/surface/scan_volumetric_integration.h>
 
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -44,6 +45,11 @@ namespace
     print_info ("  --loop             a turntable: the last view overlaps the first (closes the loop)\n");
     print_info ("  --references N     registered views each new view is tried against, newest first, 0 = all (default %d)\n", m.max_references);
     print_info ("  --no-global        skip the global registration step\n");
+    print_info ("  --dims X,Y,Z       the object's dimensions D when known (default: from all views, Eq. 1)\n");
+    print_info ("  --dims-tolerance T how far registered views may exceed D, in d_res, after ICP (local, default %g)\n"
+                "                     and over all views (global, Section 4.2, default %g); raise it when D comes\n"
+                "                     from views that never see an extent whole\n",
+                m.pairwise.verification.fine_dimension_tolerance, m.global_verification.tolerance);
     print_info ("  --voxel SIZE       voxel edge in the scans' units (default: %g d_res)\n", v.voxel_size_resolutions);
     print_info ("  --voxel-res K      voxel edge in d_res, when --voxel is not given (default %g)\n", v.voxel_size_resolutions);
     print_info ("  --max-memory MB    refuse a voxel volume larger than this (default %zu)\n", v.max_memory_bytes >> 20);
@@ -77,6 +83,36 @@ namespace
     return views;
   }
 
+  /** Fail before the work, not after it, when an output cannot be written. */
+  void
+  requireWritableFolder (const std::string& file)
+  {
+    const std::filesystem::path folder = std::filesystem::absolute (file).parent_path ();
+    if (!std::filesystem::is_directory (folder))
+      PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << file << "': no folder " << folder);
+  }
+
+  /** --dims and --dims-tolerance: what the object's size is known to be, and how strictly to hold to it. */
+  void
+  parseDimensions (int argc, char** argv, pcl::registration::MultiviewRegistrationParams& p)
+  {
+    std::vector<double> dims;
+    if (parse_x_arguments (argc, argv, "--dims", dims) > 0)
+    {
+      if (dims.size () != 3 || !(dims[0] > 0 && dims[1] > 0 && dims[2] > 0))
+        PCL_TENSOR_THROW (pcl::BadArgumentException, "--dims takes three positive numbers X,Y,Z");
+      p.object_dimensions = Eigen::Vector3d (dims[0], dims[1], dims[2]);
+    }
+    double tolerance = 0.0;
+    if (parse_argument (argc, argv, "--dims-tolerance", tolerance) >= 0)
+    {
+      if (!(tolerance >= 0.0))
+        PCL_TENSOR_THROW (pcl::BadArgumentException, "--dims-tolerance must be a non-negative number of d_res");
+      p.global_verification.tolerance = tolerance;
+      p.pairwise.verification.fine_dimension_tolerance = tolerance;
+    }
+  }
+
   ModelOptions
   parseOptions (int argc, char** argv)
   {
@@ -86,6 +122,8 @@ namespace
       PCL_TENSOR_THROW (pcl::BadArgumentException, "-o model.ply is required; see --help");
     o.conf = o.output.substr (0, o.output.find_last_of ('.')) + ".conf";
     parse_argument (argc, argv, "--conf", o.conf);
+    requireWritableFolder (o.output);
+    requireWritableFolder (o.conf);
     parse_argument (argc, argv, "--pairs", o.pairs);
     o.views = viewFiles (argc, argv, {o.output, o.conf});
     if (o.views.size () < 2)
@@ -95,6 +133,7 @@ namespace
     o.registration.global_registration = !find_switch (argc, argv, "--no-global");
     parse_argument (argc, argv, "--references", o.registration.max_references);
     parse_argument (argc, argv, "--faces", o.registration.pairwise.preparation.target_faces);
+    parseDimensions (argc, argv, o.registration);
     double voxel = 0.0;
     if (parse_argument (argc, argv, "--voxel", voxel) >= 0 && !(voxel > 0.0))
       PCL_TENSOR_THROW (pcl::BadArgumentException, "--voxel must be positive, got " << voxel);

@@ -196,3 +196,22 @@ TEST (MultiviewTensorRegistration, GlobalVerificationRefusalMovesOnToTheNextMatc
   EXPECT_GT (refused.hypotheses_tried, accepted.hypotheses_tried) << "no further match was tried after the refusal";
   EXPECT_TRUE (refused.transform.isIdentity ());
 }
+
+TEST (MultiviewTensorRegistration, KnownDimensionsReplaceEq1)
+{
+  const auto& views = exampleRing ();
+  const std::vector<MultiviewInput> inputs{inputOf (views[0], "v0"), inputOf (views[1], "v1")};
+  MultiviewTensorRegistration registration;
+  MultiviewRegistrationParams params;
+  params.object_dimensions = Eigen::Vector3d (0.1, 0.3, 0.2);
+  registration.setParams (params);
+  const MultiviewRegistrationResult known = registration.compute (inputs);
+  EXPECT_EQ (known.dimensions.D, Eigen::Vector3d (0.3, 0.2, 0.1));  // sorted, largest first, as Eq. 1 gives
+
+  params.object_dimensions.setZero ();
+  registration.setParams (params);
+  const MultiviewRegistrationResult measured = registration.compute (inputs);
+  const auto eq1 = pcl::computeObjectDimensions<pcl::PointNormal> (
+      {measured.views[0].prepared->fine.cloud.get (), measured.views[1].prepared->fine.cloud.get ()});
+  EXPECT_EQ (measured.dimensions.D, eq1.D);
+}

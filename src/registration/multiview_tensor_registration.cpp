@@ -6,6 +6,7 @@
 #include <pcl/common/time.h>
 
 #include <algorithm>
+#include <functional>
 #include <set>
 
 namespace pcl
@@ -68,9 +69,9 @@ namespace pcl
         }
       }
 
-      /** D from every usable view (Eq. 1) and the mean d_res. */
+      /** D from every usable view (Eq. 1), unless it is known, and the mean d_res. */
       void
-      measureObject (MultiviewRegistrationResult& result)
+      measureObject (const MultiviewRegistrationParams& params, MultiviewRegistrationResult& result)
       {
         std::vector<const pcl::PointCloud<pcl::PointNormal>*> fine;
         double resolution = 0.0;
@@ -82,7 +83,13 @@ namespace pcl
           }
         if (fine.empty ())
           return;
-        result.dimensions = computeObjectDimensions<pcl::PointNormal> (fine);
+        if ((params.object_dimensions.array () > 0.0).all ())
+        {
+          result.dimensions.D = params.object_dimensions;
+          std::sort (result.dimensions.D.data (), result.dimensions.D.data () + 3, std::greater<> ());
+        }
+        else
+          result.dimensions = computeObjectDimensions<pcl::PointNormal> (fine);
         result.resolution = resolution / static_cast<double> (fine.size ());
       }
 
@@ -319,7 +326,7 @@ namespace pcl
       MultiviewRegistrationResult result;
       result.views.resize (views.size ());
       prepareViews (views, params_, progress_, result);
-      measureObject (result);
+      measureObject (params_, result);
       result.timings.prepare_ms = watch.getTime ();
       if (result.resolution <= 0.0)
         return result;  // no usable view: none is registered, each says why

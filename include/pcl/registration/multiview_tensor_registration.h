@@ -49,6 +49,10 @@ namespace pcl
       TensorRegistrationParams pairwise;
       /** Global verification (Section 4.2): 4 d_res on the two largest extents. */
       GlobalVerificationParams global_verification;
+      /** The object's dimensions D when they are known (any order; sorted when used). Zero (default):
+        * from all views by Eq. 1, which underestimates an extent that no single view sees whole (the
+        * dragon's depth on a turntable, by 28 d_res), and then the dimension checks need more tolerance. */
+      Eigen::Vector3d object_dimensions = Eigen::Vector3d::Zero ();
       /** A turntable set: the last view also overlaps the first, and the global step closes the loop. */
       bool loop = false;
       /** Registered views each new view is tried against, most recently registered first (0: all).
