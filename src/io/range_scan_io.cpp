@@ -2,6 +2,7 @@
  * pcl_tensor: automatic pairwise registration of range images with tensors.
  */
 #include <pcl/io/range_scan_io.h>
+#include "file_input.h"
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
@@ -9,7 +10,6 @@
 
 #include <boost/algorithm/string/case_conv.hpp>
 
-#include <fstream>
 
 namespace pcl
 {
@@ -55,9 +55,9 @@ namespace pcl
     RangeScan
     loadRangeScan (const std::string& path)
     {
-      if (!std::ifstream (path).good ())
-        PCL_TENSOR_THROW (pcl::IOException, "cannot open '" << path << "'");
+      detail::requireReadableFile (path);
       RangeScan scan;
+      const detail::QuietPclConsole quiet;
       const std::string ext = extensionOf (path);
       int status = -1;
       if (ext == "ply")

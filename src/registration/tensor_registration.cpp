@@ -14,18 +14,47 @@ namespace pcl
 {
   namespace registration
   {
+    namespace
+    {
+      using ViewTensorEstimation = pcl::TensorEstimation<pcl::PointNormal, pcl::PointNormal, pcl::TensorDescriptor>;
+
+      /** The settings of \a params that TensorEstimation takes; its setters check them. */
+      void
+      configureEstimation (ViewTensorEstimation& estimation, const TensorRegistrationParams& params)
+      {
+        estimation.setGridSize (params.grid_size);
+        estimation.setPartnersPerVertex (params.partners_per_vertex);
+        estimation.setMinNormalAngle (params.min_normal_angle);
+        estimation.setRegionGrowing (params.region_growing);
+      }
+    }
+
+    void
+    checkParams (const TensorRegistrationParams& params)
+    {
+      checkScanPreparationParams (params.preparation);
+      ViewTensorEstimation estimation;
+      configureEstimation (estimation, params);
+      CorrespondenceEstimationTensor matcher;
+      configureMatcher (matcher, params);
+      CorrespondenceRejectorTensorVerification verifier;
+      verifier.setParams (params.verification);
+      if (params.max_hypotheses < 0)
+        PCL_TENSOR_THROW (BadArgumentException, "the hypothesis cap must be 0 (none) or positive, got " << params.max_hypotheses);
+      if (!(params.repeat_rotation >= 0.0 && params.repeat_translation >= 0.0) ||
+          !std::isfinite (params.repeat_rotation) || !std::isfinite (params.repeat_translation))
+        PCL_TENSOR_THROW (BadArgumentException, "repeat tolerances must be finite and non-negative");
+    }
+
     pcl::PointCloud<pcl::TensorDescriptor>::Ptr
     computeViewTensors (const PreparedScan& scan, const ObjectDimensions& dims, const TensorRegistrationParams& params)
     {
-      pcl::TensorEstimation<pcl::PointNormal, pcl::PointNormal, pcl::TensorDescriptor> estimation;
+      ViewTensorEstimation estimation;
       estimation.setInputCloud (scan.reduced.cloud);
       estimation.setInputNormals (scan.reduced.cloud);
       estimation.setPolygons (scan.reduced.polygons);
       estimation.setObjectDimensions (dims);
-      estimation.setGridSize (params.grid_size);
-      estimation.setPartnersPerVertex (params.partners_per_vertex);
-      estimation.setMinNormalAngle (params.min_normal_angle);
-      estimation.setRegionGrowing (params.region_growing);
+      configureEstimation (estimation, params);
       pcl::PointCloud<pcl::TensorDescriptor>::Ptr tensors (new pcl::PointCloud<pcl::TensorDescriptor>);
       estimation.computeOrThrow (*tensors);
       return tensors;
@@ -96,14 +125,23 @@ namespace pcl
                          const ObjectDimensions& dims, const TensorRegistrationParams& params, TensorRegistrationReport& report)
     {
       pcl::StopWatch watch;
+      report.model_tensors = model_tensors->size ();
+      report.scene_tensors = scene_tensors->size ();
+      report.registered = false;
+      report.transform = Eigen::Matrix4f::Identity ();
+      report.failures.fill (0);
+      report.hypotheses_tried = 0;
+      report.hypotheses_skipped = 0;
+      report.dimensions = dims;
+      // A view without tensors (a plane: no two normals theta_d apart) matches nothing: not registered.
+      if (model_tensors->empty () || scene_tensors->empty ())
+        return;
       CorrespondenceEstimationTensor estimation;
       configureMatcher (estimation, params);
       estimation.setInputSource (scene_tensors);
       estimation.setInputTarget (model_tensors);
       pcl::Correspondences correspondences;
       estimation.determineCorrespondences (correspondences);
-      report.model_tensors = model_tensors->size ();
-      report.scene_tensors = scene_tensors->size ();
       report.matches = correspondences.size ();
       report.comparisons = estimation.getComparisons ();
       report.timings.matching_ms = watch.getTime ();
@@ -112,12 +150,6 @@ namespace pcl
       CorrespondenceRejectorTensorVerification verification;
       configureVerifier (verification, model, model_tensors, scene, scene_tensors, dims, params);
       report.resolution = verification.getResolution ();
-      report.dimensions = dims;
-      report.registered = false;
-      report.transform = Eigen::Matrix4f::Identity ();
-      report.failures.fill (0);
-      report.hypotheses_tried = 0;
-      report.hypotheses_skipped = 0;
       RefutedHypotheses refuted (params.repeat_rotation, params.repeat_translation * report.resolution);
       const std::vector<TensorMatch>& matches = estimation.getMatches ();
       for (const TensorMatch& match : matches)
