@@ -134,8 +134,13 @@ namespace
     TensorRegistration registration;
     const auto& report = registerClouds (registration, model, scene);
     registered = report.registered;
-    const Eigen::Affine3d truth = model.pose.inverse () * scene.pose;
-    return pcl::registrationError (Eigen::Affine3d (report.transform.cast<double> ()), truth, scale * views[0].resolution);
+    // Both poses are compared about the object, not about the far origin, where any rotation error
+    // (0.02 degrees, as without offset) would be multiplied by the 1e6 lever arm.
+    const Eigen::Affine3d to_object = Eigen::Affine3d::Identity () * Eigen::Translation3d (-offset);
+    const Eigen::Affine3d from_object = to_object.inverse ();
+    const Eigen::Affine3d truth = to_object * model.pose.inverse () * scene.pose * from_object;
+    const Eigen::Affine3d estimate = to_object * Eigen::Affine3d (report.transform.cast<double> ()) * from_object;
+    return pcl::registrationError (estimate, truth, scale * views[0].resolution);
   }
 }
 
@@ -287,7 +292,7 @@ TEST (HardeningRegistration, DegenerateViewsThrowOrAreNotRegistered)
   collinear.cloud.reset (new Cloud);
   for (int i = 0; i < 100; ++i)
     collinear.cloud->push_back (pcl::PointXYZ (0.001f * i, 0.0f, -0.5f));
-  for (const ScaledView* bad : {&duplicates, &collinear})
+  for (const ScaledView* bad : std::initializer_list<const ScaledView*>{&duplicates, &collinear})
   {
     TensorRegistration registration;
     EXPECT_THROW (registerClouds (registration, good, *bad), pcl::InvalidScanException);
@@ -312,7 +317,7 @@ TEST (HardeningRegistration, IdenticalViewsGiveTheIdentity)
   const ScaledView view = scaleView (neighbourViews ()[1], 1.0, Eigen::Vector3d::Zero ());
   ScaledView copy = view;
   copy.cloud.reset (new Cloud (*view.cloud));
-  for (const ScaledView* scene : {&view, &copy})  // the same cloud twice, and an identical copy
+  for (const ScaledView* scene : std::initializer_list<const ScaledView*>{&view, &copy})  // the same cloud, and a copy
   {
     TensorRegistration registration;
     const auto& report = registerClouds (registration, view, *scene);

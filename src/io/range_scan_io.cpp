@@ -10,6 +10,11 @@
 
 #include <boost/algorithm/string/case_conv.hpp>
 
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <vector>
+
 
 namespace pcl
 {
@@ -42,6 +47,50 @@ namespace pcl
       }
     }
 
+    namespace
+    {
+      /** PCL 1.13's PCDReader segfaults on a file without a complete header (an empty file, text,
+        * random bytes), so the header is checked here first: known keywords only, the mandatory
+        * ones present, one SIZE, TYPE and COUNT entry per field, before a single DATA line. */
+      void
+      requirePcdHeader (const std::string& path)
+      {
+        static const std::set<std::string> known = {"VERSION", "FIELDS", "COLUMNS", "SIZE", "TYPE", "COUNT",
+                                                     "WIDTH", "HEIGHT", "VIEWPOINT", "POINTS", "DATA"};
+        static const std::set<std::string> mandatory = {"FIELDS", "SIZE", "TYPE", "WIDTH", "HEIGHT", "POINTS"};
+        std::ifstream in (path, std::ios::binary);
+        std::set<std::string> seen;
+        std::size_t fields = 0;
+        std::string line;
+        for (int line_no = 1; line_no <= 64 && std::getline (in, line); ++line_no)
+        {
+          std::istringstream words (line);
+          std::string key;
+          if (!(words >> key) || key[0] == '#')
+            continue;
+          std::vector<std::string> values;
+          for (std::string v; words >> v;)
+            values.push_back (v);
+          if (!known.count (key) || values.empty ())
+            break;
+          if (key == "FIELDS" || key == "COLUMNS")
+            fields = values.size ();
+          else if ((key == "SIZE" || key == "TYPE" || key == "COUNT") && values.size () != fields)
+            PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": " << key << " has " << values.size ()
+                              << " entries for " << fields << " fields");
+          seen.insert (key == "COLUMNS" ? "FIELDS" : key);
+          if (key == "DATA")
+          {
+            for (const auto& k : mandatory)
+              if (!seen.count (k))
+                PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no " << k << " line in its PCD header");
+            return;
+          }
+        }
+        PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no PCD header (up to a DATA line)");
+      }
+    }
+
     std::size_t
     updateDenseFlag (pcl::PointCloud<pcl::PointXYZ>& cloud)
     {
@@ -67,6 +116,7 @@ namespace pcl
       }
       else if (ext == "pcd")
       {
+        requirePcdHeader (path);
         pcl::PCDReader reader;
         status = reader.read (path, *scan.cloud);
         if (status >= 0)

@@ -195,14 +195,63 @@ namespace pcl
       align (output);
     }
 
+    namespace
+    {
+      /** The centroid of the finite points, in double. */
+      Eigen::Vector3d
+      finiteCentroid (const pcl::PointCloud<pcl::PointXYZ>& cloud)
+      {
+        Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
+        std::size_t n = 0;
+        for (const auto& p : cloud)
+          if (pcl::isXYZFinite (p))
+          {
+            sum += p.getVector3fMap ().cast<double> ();
+            ++n;
+          }
+        return n ? Eigen::Vector3d (sum / static_cast<double> (n)) : sum;
+      }
+
+      /** \a cloud moved by -\a centre (organization and NaN cells kept). */
+      pcl::PointCloud<pcl::PointXYZ>
+      centred (const pcl::PointCloud<pcl::PointXYZ>& cloud, const Eigen::Vector3d& centre)
+      {
+        pcl::PointCloud<pcl::PointXYZ> out (cloud);
+        for (auto& p : out)
+          p.getVector3fMap () = (p.getVector3fMap ().cast<double> () - centre).cast<float> ();
+        return out;
+      }
+
+      ScanViewpoint
+      centred (ScanViewpoint viewpoint, const Eigen::Vector3d& centre)
+      {
+        viewpoint.sensor_pose.translation () -= centre;
+        return viewpoint;
+      }
+
+      /** A transform between centred views, as one between the views: Tr(model) * t * Tr(-scene). */
+      Eigen::Matrix4f
+      uncentred (const Eigen::Matrix4f& t, const Eigen::Vector3d& model_centre, const Eigen::Vector3d& scene_centre)
+      {
+        const Eigen::Affine3d a = Eigen::Translation3d (model_centre) * Eigen::Affine3d (t.cast<double> ()) *
+                                  Eigen::Translation3d (-scene_centre);
+        return a.matrix ().cast<float> ();
+      }
+    }
+
     void
     TensorRegistration::computeTransformation (PointCloudSource& output, const Matrix4& guess)
     {
       (void) guess;  // the method is global: it needs no initial guess
       pcl::StopWatch total, watch;
       report_ = TensorRegistrationReport ();
-      auto model = std::make_shared<PreparedScan> (prepareScan (*target_, target_viewpoint_, params_.preparation));
-      auto scene = std::make_shared<PreparedScan> (prepareScan (*input_, source_viewpoint_, params_.preparation));
+      // Each view is registered about its own centroid: 1e6 from the origin a float keeps only
+      // 1/16 of a unit, and meshing, normals and ICP would work on rounding noise.
+      const Eigen::Vector3d model_centre = finiteCentroid (*target_), scene_centre = finiteCentroid (*input_);
+      auto model = std::make_shared<PreparedScan> (
+          prepareScan (centred (*target_, model_centre), centred (target_viewpoint_, model_centre), params_.preparation));
+      auto scene = std::make_shared<PreparedScan> (
+          prepareScan (centred (*input_, scene_centre), centred (source_viewpoint_, scene_centre), params_.preparation));
       report_.timings.prepare_ms = watch.getTime ();
 
       const ObjectDimensions dims = has_dims_ ? dims_
@@ -213,6 +262,11 @@ namespace pcl
       report_.timings.tensors_ms = watch.getTime ();
 
       registerTensorViews (model, model_tensors, scene, scene_tensors, dims, params_, report_);
+      if (report_.registered)
+      {
+        report_.transform = uncentred (report_.transform, model_centre, scene_centre);
+        report_.verification.transform = report_.transform;
+      }
       converged_ = report_.registered;
       final_transformation_ = report_.transform;
       transformation_ = report_.transform;

@@ -8,20 +8,19 @@ add_test(NAME app_make_bad_inputs
 set_tests_properties(app_make_bad_inputs PROPERTIES FIXTURES_SETUP bad_inputs FIXTURES_REQUIRED register_views)
 
 # Files every app must refuse with exit code 2.
-set(PCL_TENSOR_BAD_INPUTS empty directory truncated wrong_count garbage all_nonfinite duplicates two_points collinear)
+set(PCL_TENSOR_BAD_INPUTS empty.ply directory.ply truncated.ply wrong_count.ply garbage.ply all_nonfinite.ply
+    duplicates.ply two_points.ply collinear.ply empty.pcd garbage.pcd)
 
-# pcl_tensor_bad_input_tests(PREFIX COMMAND app args... @INPUT@ args...): one test PREFIX_bad_<case> per
+# pcl_tensor_bad_input_tests(PREFIX COMMAND app args... @INPUT@ args...): one test PREFIX_bad_<file> per
 # bad file (@INPUT@ is replaced by its path), a missing file and an unreadable one; all expect exit 2.
 function(pcl_tensor_bad_input_tests prefix)
   cmake_parse_arguments(ARG "" "" "COMMAND" ${ARGN})
-  foreach(case IN LISTS PCL_TENSOR_BAD_INPUTS ITEMS missing unreadable)
-    set(input ${BAD}/${case}.ply)
-    if(case STREQUAL "missing")
-      set(input ${BAD}/no_such_scan.ply)
-    endif()
+  foreach(file IN LISTS PCL_TENSOR_BAD_INPUTS ITEMS missing.ply unreadable.ply)
+    set(input ${BAD}/${file})
+    string(REPLACE "." "_" case "${file}")
     string(REPLACE "@INPUT@" "${input}" command "${ARG_COMMAND}")
     set(unreadable "")
-    if(case STREQUAL "unreadable")
+    if(file STREQUAL "unreadable.ply")
       set(unreadable ${input})
     endif()
     pcl_tensor_app_test(${prefix}_bad_${case} 2 UNREADABLE "${unreadable}" COMMAND ${command})

@@ -27,6 +27,9 @@ endforeach()
 string(ASCII ${codes} alphabet)
 string(RANDOM LENGTH 4096 ALPHABET "${alphabet}" RANDOM_SEED 2006 garbage)
 file(WRITE ${OUT_DIR}/garbage.ply "${garbage}")
+# PCL 1.13's PCD reader crashed on these two (the loader now checks the header first).
+file(WRITE ${OUT_DIR}/empty.pcd "")
+file(WRITE ${OUT_DIR}/garbage.pcd "${garbage}")
 
 # coordinates
 write_ascii_ply(all_nonfinite "nan nan nan;inf 0 0;0 -inf 0;nan 1 2;1 2 inf")
