@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs exactly what pcl_tensor needs on Debian 12 (bookworm). Run as root (or with sudo).
+# Installs exactly what pcl_tensor needs on Debian 12 (bookworm), clang for the fuzz targets
+# included. Run as root (or with sudo).
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 SUDO=""
@@ -8,5 +9,6 @@ $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   ca-certificates cmake g++ make \
   libpcl-dev libmeshoptimizer-dev \
-  libgtest-dev googletest libbenchmark-dev > /dev/null
+  libgtest-dev googletest libbenchmark-dev \
+  clang libclang-rt-14-dev > /dev/null
 echo "pcl_tensor: build dependencies installed"

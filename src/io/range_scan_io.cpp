@@ -3,14 +3,21 @@
  */
 #include <pcl/io/range_scan_io.h>
 #include <pcl/io/ascii_range_ply.h>
+#include "file_input.h"
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
+#include <pcl/common/io.h>
+#include <pcl/conversions.h>
 #include <pcl/common/point_tests.h>
 
 #include <boost/algorithm/string/case_conv.hpp>
 
 #include <fstream>
+#include <set>
+#include <sstream>
+#include <vector>
+
 
 namespace pcl
 {
@@ -43,6 +50,112 @@ namespace pcl
       }
     }
 
+    namespace
+    {
+      /** PCL 1.13's PCDReader segfaults on a file without a complete header (an empty file, text,
+        * random bytes), so the header is checked here first: known keywords only, the mandatory
+        * ones present, one SIZE, TYPE and COUNT entry per field, before a single DATA line. */
+      void
+      requirePcdHeader (const std::string& path)
+      {
+        static const std::set<std::string> known = {"VERSION", "FIELDS", "COLUMNS", "SIZE", "TYPE", "COUNT",
+                                                     "WIDTH", "HEIGHT", "VIEWPOINT", "POINTS", "DATA"};
+        static const std::set<std::string> mandatory = {"FIELDS", "SIZE", "TYPE", "WIDTH", "HEIGHT", "POINTS"};
+        std::ifstream in (path, std::ios::binary);
+        std::set<std::string> seen;
+        std::size_t fields = 0;
+        std::string line;
+        for (int line_no = 1; line_no <= 64 && std::getline (in, line); ++line_no)
+        {
+          std::istringstream words (line);
+          std::string key;
+          if (!(words >> key) || key[0] == '#')
+            continue;
+          std::vector<std::string> values;
+          for (std::string v; words >> v;)
+            values.push_back (v);
+          if (!known.count (key) || values.empty ())
+            break;
+          if (key == "FIELDS" || key == "COLUMNS")
+            fields = values.size ();
+          else if ((key == "SIZE" || key == "TYPE" || key == "COUNT") && values.size () != fields)
+            PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": " << key << " has " << values.size ()
+                              << " entries for " << fields << " fields");
+          seen.insert (key == "COLUMNS" ? "FIELDS" : key);
+          if (key == "DATA")
+          {
+            for (const auto& k : mandatory)
+              if (!seen.count (k))
+                PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no " << k << " line in its PCD header");
+            return;
+          }
+        }
+        PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no PCD header (up to a DATA line)");
+      }
+    }
+
+    namespace
+    {
+      /** PCL 1.13's PLYReader asserts (aborts the process) on a list property in the vertex element
+        * and on more vertices than the obj_info grid has cells, so the header is checked here first:
+        * the "ply" magic, an end_header line, scalar vertex properties, a grid that holds the vertices. */
+      void
+      requirePlyHeader (const std::string& path)
+      {
+        std::ifstream in (path, std::ios::binary);
+        std::string line, element;
+        if (!std::getline (in, line) || line.rfind ("ply", 0) != 0 || line.find_first_not_of ("\r", 3) != std::string::npos)
+          PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' does not start with the PLY magic line");
+        unsigned long long vertices = 0, cols = 0, rows = 0;
+        for (int line_no = 2; line_no <= 1000 && std::getline (in, line); ++line_no)
+        {
+          std::istringstream words (line);
+          std::string key, type;
+          words >> key >> type;
+          if (key == "end_header")
+          {
+            if (cols > 0 && rows > 0 && cols * rows < vertices)
+              PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has " << vertices << " vertices in a grid of "
+                                << cols << " x " << rows << " cells");
+            return;
+          }
+          if (key == "element")
+          {
+            element = type;
+            if (type == "vertex" && !(words >> vertices))
+              PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": a vertex element without a count");
+          }
+          else if (key == "obj_info" && (type == "num_cols" || type == "num_rows"))
+            words >> (type == "num_cols" ? cols : rows);
+          else if (key == "property" && type == "list" && element == "vertex")
+            PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": a list property in the vertex element");
+        }
+        PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no end_header line");
+      }
+
+      /** What PCL's reader.read (path, cloud) does, with the checks it lacks: PCL converts a file of no
+        * points (or of a grid but no vertex data) by binding a reference to element 0 of an empty
+        * vector, and trusts that the data holds width x height points with x, y and z. */
+      void
+      readPoints (pcl::FileReader& reader, const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud)
+      {
+        pcl::PCLPointCloud2 blob;
+        int version = 0;
+        if (reader.read (path, blob, cloud.sensor_origin_, cloud.sensor_orientation_, version) < 0)
+          PCL_TENSOR_THROW (pcl::IOException, "cannot parse '" << path << "'");
+        const std::size_t points = static_cast<std::size_t> (blob.width) * blob.height;
+        if (points == 0)
+          PCL_TENSOR_THROW (InvalidScanException, "'" << path << "' has no points");
+        for (const char* axis : {"x", "y", "z"})
+          if (pcl::getFieldIndex (blob, axis) < 0)
+            PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no " << axis << " coordinate");
+        if (blob.point_step == 0 || blob.row_step < static_cast<std::size_t> (blob.point_step) * blob.width ||
+            blob.data.size () < static_cast<std::size_t> (blob.row_step) * blob.height)
+          PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' holds fewer bytes than its " << points << " points need");
+        pcl::fromPCLPointCloud2 (blob, cloud);
+      }
+    }
+
     std::size_t
     updateDenseFlag (pcl::PointCloud<pcl::PointXYZ>& cloud)
     {
@@ -56,27 +169,29 @@ namespace pcl
     RangeScan
     loadRangeScan (const std::string& path)
     {
-      if (!std::ifstream (path).good ())
-        PCL_TENSOR_THROW (pcl::IOException, "cannot open '" << path << "'");
+      detail::requireReadableFile (path);
       RangeScan scan;
+      const detail::QuietPclConsole quiet;
       const std::string ext = extensionOf (path);
-      int status = -1;
       if (ext == "ply")
       {
         // The fast path reads the ASCII scans (Stanford's) several times faster than pcl::PLYReader.
-        status = readAsciiRangePLY (path, *scan.cloud) ? 0 : pcl::PLYReader ().read (path, *scan.cloud);
+        if (!readAsciiRangePLY (path, *scan.cloud))
+        {
+          requirePlyHeader (path);
+          pcl::PLYReader reader;
+          readPoints (reader, path, *scan.cloud);
+        }
       }
       else if (ext == "pcd")
       {
+        requirePcdHeader (path);
         pcl::PCDReader reader;
-        status = reader.read (path, *scan.cloud);
-        if (status >= 0)
-          scan.viewpoint = ScanViewpoint::fromCloud (*scan.cloud);
+        readPoints (reader, path, *scan.cloud);
+        scan.viewpoint = ScanViewpoint::fromCloud (*scan.cloud);
       }
       else
         PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' is neither .ply nor .pcd");
-      if (status < 0)
-        PCL_TENSOR_THROW (pcl::IOException, "cannot parse '" << path << "' as " << ext);
 
       dropNonFiniteIfUnorganized (*scan.cloud);
       scan.finite_points = updateDenseFlag (*scan.cloud);

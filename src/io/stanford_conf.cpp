@@ -2,8 +2,10 @@
  * pcl_tensor: automatic pairwise registration of range images with tensors.
  */
 #include <pcl/io/stanford_conf.h>
+#include "file_input.h"
 #include <pcl/common/tensor_exceptions.h>
 
+#include <cmath>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -45,7 +47,9 @@ namespace pcl
           PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no
                             << ": a bmesh line needs FILE tx ty tz qx qy qz qw");
         e.quaternion = Eigen::Quaterniond (qw, qx, qy, qz);
-        if (!(e.quaternion.norm () > 0.0) || !e.translation.allFinite ())
+        // An infinite or overflowing quaternion would normalize to NaN: a rotation must come out.
+        const double norm = e.quaternion.norm ();
+        if (!(norm > 0.0) || !std::isfinite (norm) || !e.translation.allFinite ())
           PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": invalid pose");
         return e;
       }
@@ -54,6 +58,7 @@ namespace pcl
     std::vector<StanfordConfEntry>
     loadStanfordConf (const std::string& path)
     {
+      detail::requireReadableFile (path);
       std::ifstream file (path);
       if (!file)
         PCL_TENSOR_THROW (pcl::IOException, "cannot open '" << path << "'");

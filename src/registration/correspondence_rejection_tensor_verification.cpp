@@ -8,6 +8,7 @@
 #include <pcl/registration/point_to_plane_icp.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace pcl
 {
@@ -40,6 +41,26 @@ namespace pcl
     {
       scene_ = scan;
       scene_tensors_ = tensors;
+      prepared_ = false;
+    }
+
+    void
+    CorrespondenceRejectorTensorVerification::setParams (const TensorVerificationParams& params)
+    {
+      const auto positive = [] (double v) { return std::isfinite (v) && v > 0.0; };
+      const auto& p = params;
+      // With a zero n_c or distance every hypothesis would count its correspondences against zero.
+      if (!(p.correspondence_fraction > 0.0 && p.correspondence_fraction <= 1.0))
+        PCL_TENSOR_THROW (BadArgumentException, "verification: n_c fraction must be in (0, 1], got " << p.correspondence_fraction);
+      if (!positive (p.coarse_distance) || !positive (p.fine_distance) || !positive (p.icp_max_distance))
+        PCL_TENSOR_THROW (BadArgumentException, "verification: distances must be positive, got coarse " << p.coarse_distance
+                          << ", fine " << p.fine_distance << ", ICP " << p.icp_max_distance);
+      if (!(p.coarse_dimension_fraction >= 0.0) || !(p.fine_dimension_tolerance >= 0.0) ||
+          !std::isfinite (p.coarse_dimension_fraction) || !std::isfinite (p.fine_dimension_tolerance))
+        PCL_TENSOR_THROW (BadArgumentException, "verification: dimension tolerances must be finite and non-negative");
+      if (p.checked_dimensions < 1 || p.checked_dimensions > 3 || p.icp_iterations < 0 || p.sample_points < 1)
+        PCL_TENSOR_THROW (BadArgumentException, "verification: checked dimensions must be 1..3, ICP iterations >= 0 and sample points >= 1");
+      params_ = params;
       prepared_ = false;
     }
 

@@ -14,18 +14,47 @@ namespace pcl
 {
   namespace registration
   {
+    namespace
+    {
+      using ViewTensorEstimation = pcl::TensorEstimation<pcl::PointNormal, pcl::PointNormal, pcl::TensorDescriptor>;
+
+      /** The settings of \a params that TensorEstimation takes; its setters check them. */
+      void
+      configureEstimation (ViewTensorEstimation& estimation, const TensorRegistrationParams& params)
+      {
+        estimation.setGridSize (params.grid_size);
+        estimation.setPartnersPerVertex (params.partners_per_vertex);
+        estimation.setMinNormalAngle (params.min_normal_angle);
+        estimation.setRegionGrowing (params.region_growing);
+      }
+    }
+
+    void
+    checkParams (const TensorRegistrationParams& params)
+    {
+      checkScanPreparationParams (params.preparation);
+      ViewTensorEstimation estimation;
+      configureEstimation (estimation, params);
+      CorrespondenceEstimationTensor matcher;
+      configureMatcher (matcher, params);
+      CorrespondenceRejectorTensorVerification verifier;
+      verifier.setParams (params.verification);
+      if (params.max_hypotheses < 0)
+        PCL_TENSOR_THROW (BadArgumentException, "the hypothesis cap must be 0 (none) or positive, got " << params.max_hypotheses);
+      if (!(params.repeat_rotation >= 0.0 && params.repeat_translation >= 0.0) ||
+          !std::isfinite (params.repeat_rotation) || !std::isfinite (params.repeat_translation))
+        PCL_TENSOR_THROW (BadArgumentException, "repeat tolerances must be finite and non-negative");
+    }
+
     pcl::PointCloud<pcl::TensorDescriptor>::Ptr
     computeViewTensors (const PreparedScan& scan, const ObjectDimensions& dims, const TensorRegistrationParams& params)
     {
-      pcl::TensorEstimation<pcl::PointNormal, pcl::PointNormal, pcl::TensorDescriptor> estimation;
+      ViewTensorEstimation estimation;
       estimation.setInputCloud (scan.reduced.cloud);
       estimation.setInputNormals (scan.reduced.cloud);
       estimation.setPolygons (scan.reduced.polygons);
       estimation.setObjectDimensions (dims);
-      estimation.setGridSize (params.grid_size);
-      estimation.setPartnersPerVertex (params.partners_per_vertex);
-      estimation.setMinNormalAngle (params.min_normal_angle);
-      estimation.setRegionGrowing (params.region_growing);
+      configureEstimation (estimation, params);
       pcl::PointCloud<pcl::TensorDescriptor>::Ptr tensors (new pcl::PointCloud<pcl::TensorDescriptor>);
       estimation.computeOrThrow (*tensors);
       return tensors;
@@ -97,14 +126,24 @@ namespace pcl
                          const HypothesisAcceptor& accept)
     {
       pcl::StopWatch watch;
+      report.model_tensors = model_tensors->size ();
+      report.scene_tensors = scene_tensors->size ();
+      report.registered = false;
+      report.transform = Eigen::Matrix4f::Identity ();
+      report.failures.fill (0);
+      report.hypotheses_tried = 0;
+      report.hypotheses_skipped = 0;
+      report.hypotheses_refused = 0;
+      report.dimensions = dims;
+      // A view without tensors (a plane: no two normals theta_d apart) matches nothing: not registered.
+      if (model_tensors->empty () || scene_tensors->empty ())
+        return;
       CorrespondenceEstimationTensor estimation;
       configureMatcher (estimation, params);
       estimation.setInputSource (scene_tensors);
       estimation.setInputTarget (model_tensors);
       pcl::Correspondences correspondences;
       estimation.determineCorrespondences (correspondences);
-      report.model_tensors = model_tensors->size ();
-      report.scene_tensors = scene_tensors->size ();
       report.matches = correspondences.size ();
       report.comparisons = estimation.getComparisons ();
       report.timings.matching_ms = watch.getTime ();
@@ -113,13 +152,6 @@ namespace pcl
       CorrespondenceRejectorTensorVerification verification;
       configureVerifier (verification, model, model_tensors, scene, scene_tensors, dims, params);
       report.resolution = verification.getResolution ();
-      report.dimensions = dims;
-      report.registered = false;
-      report.transform = Eigen::Matrix4f::Identity ();
-      report.failures.fill (0);
-      report.hypotheses_tried = 0;
-      report.hypotheses_skipped = 0;
-      report.hypotheses_refused = 0;
       RefutedHypotheses refuted (params.repeat_rotation, params.repeat_translation * report.resolution);
       const std::vector<TensorMatch>& matches = estimation.getMatches ();
       for (const TensorMatch& match : matches)
@@ -173,14 +205,63 @@ namespace pcl
       align (output);
     }
 
+    namespace
+    {
+      /** The centroid of the finite points, in double. */
+      Eigen::Vector3d
+      finiteCentroid (const pcl::PointCloud<pcl::PointXYZ>& cloud)
+      {
+        Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
+        std::size_t n = 0;
+        for (const auto& p : cloud)
+          if (pcl::isXYZFinite (p))
+          {
+            sum += p.getVector3fMap ().cast<double> ();
+            ++n;
+          }
+        return n ? Eigen::Vector3d (sum / static_cast<double> (n)) : sum;
+      }
+
+      /** \a cloud moved by -\a centre (organization and NaN cells kept). */
+      pcl::PointCloud<pcl::PointXYZ>
+      centred (const pcl::PointCloud<pcl::PointXYZ>& cloud, const Eigen::Vector3d& centre)
+      {
+        pcl::PointCloud<pcl::PointXYZ> out (cloud);
+        for (auto& p : out)
+          p.getVector3fMap () = (p.getVector3fMap ().cast<double> () - centre).cast<float> ();
+        return out;
+      }
+
+      ScanViewpoint
+      centred (ScanViewpoint viewpoint, const Eigen::Vector3d& centre)
+      {
+        viewpoint.sensor_pose.translation () -= centre;
+        return viewpoint;
+      }
+
+      /** A transform between centred views, as one between the views: Tr(model) * t * Tr(-scene). */
+      Eigen::Matrix4f
+      uncentred (const Eigen::Matrix4f& t, const Eigen::Vector3d& model_centre, const Eigen::Vector3d& scene_centre)
+      {
+        const Eigen::Affine3d a = Eigen::Translation3d (model_centre) * Eigen::Affine3d (t.cast<double> ()) *
+                                  Eigen::Translation3d (-scene_centre);
+        return a.matrix ().cast<float> ();
+      }
+    }
+
     void
     TensorRegistration::computeTransformation (PointCloudSource& output, const Matrix4& guess)
     {
       (void) guess;  // the method is global: it needs no initial guess
       pcl::StopWatch total, watch;
       report_ = TensorRegistrationReport ();
-      auto model = std::make_shared<PreparedScan> (prepareScan (*target_, target_viewpoint_, params_.preparation));
-      auto scene = std::make_shared<PreparedScan> (prepareScan (*input_, source_viewpoint_, params_.preparation));
+      // Each view is registered about its own centroid: 1e6 from the origin a float keeps only
+      // 1/16 of a unit, and meshing, normals and ICP would work on rounding noise.
+      const Eigen::Vector3d model_centre = finiteCentroid (*target_), scene_centre = finiteCentroid (*input_);
+      auto model = std::make_shared<PreparedScan> (
+          prepareScan (centred (*target_, model_centre), centred (target_viewpoint_, model_centre), params_.preparation));
+      auto scene = std::make_shared<PreparedScan> (
+          prepareScan (centred (*input_, scene_centre), centred (source_viewpoint_, scene_centre), params_.preparation));
       report_.timings.prepare_ms = watch.getTime ();
 
       const ObjectDimensions dims = has_dims_ ? dims_
@@ -191,6 +272,11 @@ namespace pcl
       report_.timings.tensors_ms = watch.getTime ();
 
       registerTensorViews (model, model_tensors, scene, scene_tensors, dims, params_, report_);
+      if (report_.registered)
+      {
+        report_.transform = uncentred (report_.transform, model_centre, scene_centre);
+        report_.verification.transform = report_.transform;
+      }
       converged_ = report_.registered;
       final_transformation_ = report_.transform;
       transformation_ = report_.transform;

@@ -12,6 +12,8 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -86,18 +88,36 @@ namespace pcl
       return triangles;
     }
 
+    /** True when the points span no area (all on one line, or all equal): vtkDelaunay2D fails on
+      * them ("edge is non-manifold") and leaks its working mesh, so they never reach it. */
+    bool
+    spanNoArea (const std::vector<Eigen::Vector2d>& uv)
+    {
+      Eigen::Vector2d mean = Eigen::Vector2d::Zero ();
+      for (const auto& p : uv)
+        mean += p;
+      mean /= static_cast<double> (uv.size ());
+      Eigen::Matrix2d covariance = Eigen::Matrix2d::Zero ();
+      for (const auto& p : uv)
+        covariance += (p - mean) * (p - mean).transpose ();
+      const Eigen::Vector2d spread = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> (covariance, Eigen::EigenvaluesOnly).eigenvalues ();
+      return !(spread (0) > 1e-12 * spread (1));
+    }
+
     /** 2D Delaunay triangulation of the vertices projected onto the sensor's retinal plane. */
     std::vector<Triangle>
     triangulateDelaunay (const ScanMesh& mesh, const ScanViewpoint& viewpoint)
     {
+      std::vector<Eigen::Vector2d> uv (mesh.cloud->size ());
+      for (std::size_t i = 0; i < mesh.cloud->size (); ++i)
+        uv[i] = viewpoint.project ((*mesh.cloud)[i].getVector3fMap ().cast<double> ());
+      if (spanNoArea (uv))
+        return {};
       auto points = vtkSmartPointer<vtkPoints>::New ();
       points->SetDataTypeToDouble ();
       points->SetNumberOfPoints (static_cast<vtkIdType> (mesh.cloud->size ()));
-      for (std::size_t i = 0; i < mesh.cloud->size (); ++i)
-      {
-        const Eigen::Vector2d uv = viewpoint.project ((*mesh.cloud)[i].getVector3fMap ().cast<double> ());
-        points->SetPoint (static_cast<vtkIdType> (i), uv.x (), uv.y (), 0.0);
-      }
+      for (std::size_t i = 0; i < uv.size (); ++i)
+        points->SetPoint (static_cast<vtkIdType> (i), uv[i].x (), uv[i].y (), 0.0);
       auto input = vtkSmartPointer<vtkPolyData>::New ();
       input->SetPoints (points);
       auto delaunay = vtkSmartPointer<vtkDelaunay2D>::New ();

@@ -7,24 +7,42 @@
 
 namespace pcl
 {
+  namespace
+  {
+    /** The three stages of Section 2, configured from \a params (their setters check the values). */
+    struct PreparationStages
+    {
+      PreparationStages (const ScanViewpoint& viewpoint, const ScanPreparationParams& params)
+      {
+        triangulation.setViewpoint (viewpoint);
+        triangulation.setEdgeStdDevs (params.edge_std_devs);
+        reduction.setTargetFaces (params.target_faces);
+        normals.setMethod (params.normal_method);
+        normals.setRadiusResolutions (params.normal_radius_resolutions);
+      }
+      RangeScanTriangulation triangulation;
+      QuadricMeshReduction reduction;
+      ScanMeshNormalEstimation normals;
+    };
+  }
+
   PreparedScan
   prepareScan (const pcl::PointCloud<pcl::PointXYZ>& cloud, const ScanViewpoint& viewpoint,
                const ScanPreparationParams& params)
   {
-    RangeScanTriangulation triangulation;
-    triangulation.setViewpoint (viewpoint);
-    triangulation.setEdgeStdDevs (params.edge_std_devs);
-    QuadricMeshReduction reduction;
-    reduction.setTargetFaces (params.target_faces);
-    ScanMeshNormalEstimation normals;
-    normals.setMethod (params.normal_method);
-    normals.setRadiusResolutions (params.normal_radius_resolutions);
-
+    const PreparationStages stages (viewpoint, params);
     PreparedScan scan;
-    triangulation.triangulate (cloud, scan.fine);
+    stages.triangulation.triangulate (cloud, scan.fine);
     scan.resolution = meshResolution (scan.fine);
-    reduction.reduce (scan.fine, scan.reduced);
-    normals.compute (scan.reduced, scan.fine);
+    stages.reduction.reduce (scan.fine, scan.reduced);
+    stages.normals.compute (scan.reduced, scan.fine);
     return scan;
+  }
+
+  void
+  checkScanPreparationParams (const ScanPreparationParams& params)
+  {
+    const PreparationStages stages (ScanViewpoint::fromPositiveZ (), params);
+    (void) stages;
   }
 }

@@ -39,7 +39,8 @@ namespace pcl
     /** \brief Read the bmesh lines of a Stanford .conf file; `camera` and `mesh` lines, blank lines and
       * lines starting with '#' are ignored.
       * \throw pcl::IOException when the file cannot be read, a line has an unknown keyword, or a bmesh
-      * line does not hold a name and seven numbers (the message gives the line number)
+      * line does not hold a name and seven finite numbers with a non-zero quaternion (the message gives
+      * the line number)
       */
     std::vector<StanfordConfEntry>
     loadStanfordConf (const std::string& path);

@@ -45,12 +45,10 @@ namespace pcl
         void setObjectDimensions (const ObjectDimensions& dims) { dims_ = dims; }
         const ObjectDimensions& getObjectDimensions () const { return dims_; }
 
-        /** \brief Thresholds, ICP and sampling; a new sample size re-draws the scene sample. */
-        void setParams (const TensorVerificationParams& params)
-        {
-          params_ = params;
-          prepared_ = false;
-        }
+        /** \brief Thresholds, ICP and sampling; a new sample size re-draws the scene sample.
+          * \throw pcl::BadArgumentException when a value is out of range: n_c's fraction must be in
+          * (0, 1] and the distances positive, else any pose (even a wrong one) could pass verification */
+        void setParams (const TensorVerificationParams& params);
         const TensorVerificationParams& getParams () const { return params_; }
 
         /** \brief Stop after this many correspondences have passed (0: verify them all; default 0). */

@@ -91,6 +91,13 @@ namespace pcl
       } timings;
     };
 
+    /** \brief Check every parameter of \a params before any work is done: the components' own
+      * setters' ranges, a non-negative hypothesis cap and repeat tolerances.
+      * \throw pcl::BadArgumentException naming the first value out of range
+      */
+    void
+    checkParams (const TensorRegistrationParams& params);
+
     /** \brief The tensors of one prepared view (Section 2), with Eq. 2 and Eq. 3 taken from \a dims.
       * \throw pcl::BadArgumentException or pcl::InvalidScanException on unusable input
       */
@@ -147,7 +154,13 @@ namespace pcl
 
         TensorRegistration () { reg_name_ = "TensorRegistration"; }
 
-        void setParams (const TensorRegistrationParams& params) { params_ = params; }
+        /** \brief Set every parameter at once.
+          * \throw pcl::BadArgumentException when one is out of range (see checkParams()) */
+        void setParams (const TensorRegistrationParams& params)
+        {
+          checkParams (params);
+          params_ = params;
+        }
         const TensorRegistrationParams& getParams () const { return params_; }
 
         /** \brief Sensors of the scene (source) and model (target); default: +z (ScanViewpoint::fromPositiveZ). */

@@ -37,4 +37,10 @@ namespace pcl
   PreparedScan
   prepareScan (const pcl::PointCloud<pcl::PointXYZ>& cloud, const ScanViewpoint& viewpoint,
                const ScanPreparationParams& params = {});
+
+  /** \brief Check \a params as prepareScan() would, without a scan.
+    * \throw pcl::BadArgumentException when one is out of range (e.g. fewer than 4 target faces)
+    */
+  void
+  checkScanPreparationParams (const ScanPreparationParams& params);
 }
