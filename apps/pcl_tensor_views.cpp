@@ -43,6 +43,9 @@ namespace
     print_info ("    --fov DEG           horizontal field of view in degrees (default: "); print_value ("%g", d.camera.fov_deg); print_info (")\n");
     print_info ("    --ortho             orthographic camera instead of perspective (default: "); print_value ("off"); print_info (")\n");
     print_info ("    --seed S            seed of the noise's std::mt19937 (default: "); print_value ("%u", d.seed); print_info (")\n");
+    const pcl::ExampleObjectParams e;
+    print_info ("    --example-seed S    another built-in object: the seed of its bumps (default: "); print_value ("%u", e.seed); print_info (")\n");
+    print_info ("    --example-size M    the built-in object's longest extent in metres (default: "); print_value ("%g", e.size); print_info (")\n");
   }
 
   /** The command line, checked. Throws pcl::BadArgumentException on a usage error. */
@@ -52,6 +55,7 @@ namespace
     int views = 26, ring = 0;
     double step = 0.0;
     pcl::SyntheticViewParams params;
+    pcl::ExampleObjectParams example;
   };
 
   /** A strictly parsed integer: pcl::console would read "abc" as 0 without complaint. */
@@ -108,15 +112,19 @@ namespace
     parse_argument (argc, argv, "--fov", o.params.camera.fov_deg);
     parse_argument (argc, argv, "--seed", o.params.seed);
     o.params.camera.orthographic = find_switch (argc, argv, "--ortho");
+    parse_argument (argc, argv, "--example-seed", o.example.seed);
+    parse_argument (argc, argv, "--example-size", o.example.size);
+    if (!(o.example.size > 0.0))
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "--example-size must be positive");
     return o;
   }
 
   pcl::ScanMesh
-  loadModel (const std::string& mesh)
+  loadModel (const std::string& mesh, const pcl::ExampleObjectParams& example)
   {
     TicToc tt;
     tt.tic ();
-    pcl::ScanMesh model = mesh == "example" ? pcl::makeExampleObject () : pcl::io::loadScanMesh (mesh);
+    pcl::ScanMesh model = mesh == "example" ? pcl::makeExampleObject (example) : pcl::io::loadScanMesh (mesh);
     print_info ("Loaded "); print_value ("%s", mesh.c_str ()); print_info (" in "); print_value ("%g", tt.toc ());
     print_info (" ms: "); print_value ("%zu", model.cloud->size ()); print_info (" vertices, ");
     print_value ("%zu", model.polygons.size ()); print_info (" triangles\n");
@@ -155,7 +163,7 @@ namespace
   run (int argc, char** argv)
   {
     const Options o = parseOptions (argc, argv);
-    const pcl::ScanMesh model = loadModel (o.mesh);
+    const pcl::ScanMesh model = loadModel (o.mesh, o.example);
     const auto directions = o.ring > 0 ? pcl::makeRingViewDirections (o.ring, o.step, 0.0, o.params.up)
                                        : pcl::makeDefaultViewDirections (o.params.up);
     TicToc tt;

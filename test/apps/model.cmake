@@ -1,0 +1,37 @@
+# pcl_tensor_model: the whole job on synthetic views of the built-in object (register_views: a ring
+# of 12 views 30 degrees apart), a view of another object among them, and the bad-input matrix.
+set(MODEL $<TARGET_FILE:pcl_tensor_model>)
+set(MODEL_OUT ${APP_OUT}/model)
+file(MAKE_DIRECTORY ${MODEL_OUT})
+set(RING_VIEWS "")
+foreach(i 00 01 02 03 04 05 06 07 08 09 10 11)
+  list(APPEND RING_VIEWS ${REG_VIEWS}/view_${i}.ply)
+endforeach()
+
+# Every view registered, the loop closed, the model and its poses written.
+pcl_tensor_case(app_model_ring 0 EXPECTED_FILE ${MODEL_OUT}/ring.conf
+                COMMAND ${MODEL} ${RING_VIEWS} --loop --viewpoint 0,0,0 -o ${MODEL_OUT}/ring.ply --json)
+
+# A view of another object (other bumps, 0.7 times the size) between two views of the example: it is
+# refused (exit 3, one line naming it) and the model is still built from the other two.
+set(OTHER_VIEWS ${APP_OUT}/model_other_views)
+add_test(NAME app_model_make_other_views
+  COMMAND $<TARGET_FILE:pcl_tensor_views> example --example-seed 7 --example-size 0.14 -o ${OTHER_VIEWS}
+          --ring 12 --size 300 300)
+set_tests_properties(app_model_make_other_views PROPERTIES FIXTURES_SETUP other_views TIMEOUT 300)
+pcl_tensor_case(app_model_wrong_view_refused 3 EXPECTED_FILE ${MODEL_OUT}/wrong.ply
+                COMMAND ${MODEL} ${REG_VIEWS}/view_00.ply ${OTHER_VIEWS}/view_01.ply ${REG_VIEWS}/view_01.ply
+                        --viewpoint 0,0,0 -o ${MODEL_OUT}/wrong.ply)
+set_tests_properties(app_model_wrong_view_refused PROPERTIES FIXTURES_REQUIRED "register_views;other_views")
+
+# Usage errors and bad files: exit 2 with one line, before any work.
+pcl_tensor_bad_input_tests(app_model COMMAND ${MODEL} ${VIEW0} @INPUT@ -o ${MODEL_OUT}/bad.ply)
+pcl_tensor_case(app_model_no_output 2 COMMAND ${MODEL} ${VIEW0} ${VIEW1})
+pcl_tensor_case(app_model_one_view 2 COMMAND ${MODEL} ${VIEW0} -o ${MODEL_OUT}/one.ply)
+pcl_tensor_case(app_model_output_folder_missing 2 COMMAND ${MODEL} ${VIEW0} ${VIEW1} -o /nonexistent/model.ply)
+pcl_tensor_case(app_model_missing_pairs_file 2 COMMAND ${MODEL} ${VIEW0} ${VIEW1} -o ${MODEL_OUT}/p.ply --pairs /nonexistent/pairs.txt)
+foreach(option "--voxel;-1" "--dims;1;2" "--dims-tolerance;-1" "--faces;3")
+  string(REGEX REPLACE "[^a-z0-9]+" "_" tag "${option}")
+  pcl_tensor_case(app_model_param${tag} 2 COMMAND ${MODEL} ${VIEW0} ${VIEW1} -o ${MODEL_OUT}/param.ply ${option})
+endforeach()
+pcl_tensor_case(app_model_help 0 COMMAND ${MODEL} --help)
