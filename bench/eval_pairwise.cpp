@@ -6,6 +6,7 @@
  * Each experiment writes one CSV into --out (default bench_results/) and prints a summary table.
  * Third-party data is read from ../shared/data (PCL_TENSOR_SHARED_DATA) or --data DIR.
  */
+#include "eval/eval_main.h"
 #include "eval/eval_views.h"
 #include "eval/fpfh_baseline.h"
 #include "eval/match_diagnosis.h"
@@ -27,7 +28,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 
 #include <sys/wait.h>
 
@@ -320,20 +320,5 @@ namespace
 int
 main (int argc, char** argv)
 {
-  if (argc < 2 || pcl::console::find_switch (argc, argv, "-h") || pcl::console::find_switch (argc, argv, "--help"))
-  {
-    printHelp (argv[0]);
-    return argc < 2 ? 2 : 0;
-  }
-  // Line-buffered even into a file: long runs are followed with tail -f.
-  std::setvbuf (stdout, nullptr, _IOLBF, 0);
-  try
-  {
-    return run (argc, argv);
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "eval_pairwise: error: " << e.what () << std::endl;
-    return 1;
-  }
+  return evalMain (argc, argv, "eval_pairwise", printHelp, run);
 }

@@ -6,6 +6,7 @@
  * Each experiment writes its CSVs into --out and a summary_<experiment>.csv of rows "the paper's
  * figure | ours | baseline", from which scripts/experiments.sh writes doc/results.md.
  */
+#include "eval/eval_main.h"
 #include "eval/eval_views.h"
 #include "eval/fpfh_baseline.h"
 #include "eval/descriptor_discrimination.h"
@@ -29,7 +30,6 @@
 #include <filesystem>
 #include <functional>
 #include <fstream>
-#include <iostream>
 #include <map>
 #include <random>
 
@@ -790,19 +790,5 @@ namespace
 int
 main (int argc, char** argv)
 {
-  if (argc < 2 || pcl::console::find_switch (argc, argv, "-h") || pcl::console::find_switch (argc, argv, "--help"))
-  {
-    printHelp (argv[0]);
-    return argc < 2 ? 2 : 0;
-  }
-  std::setvbuf (stdout, nullptr, _IOLBF, 0);
-  try
-  {
-    return run (argc, argv);
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "eval_paper: error: " << e.what () << std::endl;
-    return 1;
-  }
+  return evalMain (argc, argv, "eval_paper", printHelp, run);
 }

@@ -17,13 +17,17 @@ f(want) = (strcol(1) eq want) ? bin(column(2)) : 1/0
 plot for [obj in "bunny dragon"] dir."/stability_distances.csv" every ::1 using (f(obj)):(1.0) smooth frequency with boxes title obj
 unset arrow
 unset label
-set title "Eq. 4: frames of tensors on corresponding vertex pairs, bunny + dragon\n(angle between B_m^T B_s and the ground-truth rotation)"
-set xlabel "frame error (deg); last bin: >= 45"
-set ylabel "tensor pairs"
-v = 1.0
-g(dist) = (column(2) == dist) ? v * floor((column(3) < 45 ? column(3) : 45) / v) + v / 2 : 1/0
-set boxwidth v
-set xrange [0:46]
-plot for [dist in "6 2"] dir."/stability_frames.csv" every ::1 using (g(dist + 0)):(1.0) smooth frequency with boxes \
-     title "vertices within ".dist." d_{res}"
+# smooth cumulative breaks its curve at undefined points, so each threshold's rows are selected by awk.
+rows(dist) = sprintf("< awk -F, 'NR > 1 && $2 == %d' %s/stability_frames.csv", dist, dir)
+set autoscale
+stats rows(6) using 3 name "S6" nooutput
+stats rows(2) using 3 name "S2" nooutput
+set title "Eq. 4: tensors on corresponding vertex pairs (bunny + dragon)\nangle between B_m^T B_s and the ground-truth rotation"
+set xlabel "frame error (deg)"
+set ylabel "fraction of the tensor pairs with at most this error"
+set xrange [0:180]
+set yrange [0:1]
+set key bottom right
+plot rows(6) using 3:(1.0 / S6_records) smooth cumulative with lines lw 2 title sprintf("vertices within 6 d_{res} (%d tensor pairs)", S6_records), \
+     rows(2) using 3:(1.0 / S2_records) smooth cumulative with lines lw 2 title sprintf("vertices within 2 d_{res} (%d tensor pairs)", S2_records)
 unset multiplot
