@@ -10,14 +10,14 @@ w = 0.01
 bin(x) = w * floor((x < 0.3 ? x : 0.3) / w) + w / 2
 set boxwidth w
 set xrange [0:0.32]
-plot for [obj in "bunny dragon example"] dir."/accuracy_".obj.".csv" every ::1 \
-     using (column(6) == 1 ? bin(column(8)) : 1/0):(1.0) smooth frequency with boxes title obj
+plot for [obj in "bunny dragon example"] rows(dir."/accuracy_".obj.".csv", "$6 == 1") \
+     using (bin(column(8))):(1.0) smooth frequency with boxes title obj
 set title "Fig. 13: translation error (Eq. 12), correct adjacent synthetic pairs"
 set xlabel "translation error (d_{res}); last bin: >= 1"
 v = 0.04
 tbin(x) = v * floor((x < 1.0 ? x : 1.0) / v) + v / 2
 set boxwidth v
 set xrange [0:1.06]
-plot for [obj in "bunny dragon example"] dir."/accuracy_".obj.".csv" every ::1 \
-     using (column(6) == 1 ? tbin(column(9)) : 1/0):(1.0) smooth frequency with boxes title obj
+plot for [obj in "bunny dragon example"] rows(dir."/accuracy_".obj.".csv", "$6 == 1") \
+     using (tbin(column(9))):(1.0) smooth frequency with boxes title obj
 unset multiplot

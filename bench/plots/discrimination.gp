@@ -9,9 +9,9 @@ set boxwidth w
 set xrange [0:41]
 set arrow from 5, graph 0 to 5, graph 1 nohead dt 2 lc rgb "black"
 set label "5 bins (paper: 2 cm)" at 5.5, graph 0.93
-f(want) = (strcol(4) eq want) ? w * floor((column(6) < 40 ? column(6) : 40) / w) + w / 2 : 1/0
+bin(x) = w * floor((x < 40 ? x : 40) / w) + w / 2
 set title "Fig. 21a: spin images (PCL, width 8), best 200 matches per pair"
-plot dir."/discrimination.csv" every ::1 using (f("spin")):(1.0) smooth frequency with boxes lc rgb "#808080" title "spin images"
+plot rows(dir."/discrimination.csv", "$4 == \"spin\"") using (bin(column(6))):(1.0) smooth frequency with boxes lc rgb "#808080" title "spin images"
 set title "Fig. 21b: tensors (15^3), best 200 matches per pair"
-plot dir."/discrimination.csv" every ::1 using (f("tensor")):(1.0) smooth frequency with boxes lc rgb "#3060a0" title "tensors"
+plot rows(dir."/discrimination.csv", "$4 == \"tensor\"") using (bin(column(6))):(1.0) smooth frequency with boxes lc rgb "#3060a0" title "tensors"
 unset multiplot

@@ -10,7 +10,7 @@ bin(x) = w * floor(x / w) + w / 2.0
 set boxwidth w * 0.9
 set xrange [0:*]
 set yrange [0:*]
-plot dir."/efficiency.csv" every ::1 using (column(6) == 1 ? bin(column(7)) : 1/0):(1.0) smooth frequency with boxes lc rgb "#3060a0" title "ours (bunny + dragon)"
+plot rows(dir."/efficiency.csv", "$6 == 1") using (bin(column(7))):(1.0) smooth frequency with boxes lc rgb "#3060a0" title "ours (bunny + dragon)"
 set title "Fig. 17b: PDF of {/Symbol q}_d of every tensor (5 deg bins)"
 set xlabel "{/Symbol q}_d (deg)"
 set ylabel "probability density (1/deg)"

@@ -13,21 +13,20 @@ set boxwidth w
 set xrange [0:41]
 set arrow from 2, graph 0 to 2, graph 1 nohead dt 2 lc rgb "black"
 set label "2 d_{res}" at 2.5, graph 0.95
-f(want) = (strcol(1) eq want) ? bin(column(2)) : 1/0
-plot for [obj in "bunny dragon"] dir."/stability_distances.csv" every ::1 using (f(obj)):(1.0) smooth frequency with boxes title obj
+plot for [obj in "bunny dragon"] rows(dir."/stability_distances.csv", sprintf("$1 == \"%s\"", obj)) using (bin(column(2))):(1.0) \
+     smooth frequency with boxes title obj
 unset arrow
 unset label
-# smooth cumulative breaks its curve at undefined points, so each threshold's rows are selected by awk.
-rows(dist) = sprintf("< awk -F, 'NR > 1 && $2 == %d' %s/stability_frames.csv", dist, dir)
+frames(dist) = rows(dir."/stability_frames.csv", sprintf("$2 == %d", dist))
 set autoscale
-stats rows(6) using 3 name "S6" nooutput
-stats rows(2) using 3 name "S2" nooutput
+stats frames(6) using 3 name "S6" nooutput
+stats frames(2) using 3 name "S2" nooutput
 set title "Eq. 4: tensors on corresponding vertex pairs (bunny + dragon)\nangle between B_m^T B_s and the ground-truth rotation"
 set xlabel "frame error (deg)"
 set ylabel "fraction of the tensor pairs with at most this error"
 set xrange [0:180]
 set yrange [0:1]
 set key bottom right
-plot rows(6) using 3:(1.0 / S6_records) smooth cumulative with lines lw 2 title sprintf("vertices within 6 d_{res} (%d tensor pairs)", S6_records), \
-     rows(2) using 3:(1.0 / S2_records) smooth cumulative with lines lw 2 title sprintf("vertices within 2 d_{res} (%d tensor pairs)", S2_records)
+plot frames(6) using 3:(1.0 / S6_records) smooth cumulative with lines lw 2 title sprintf("vertices within 6 d_{res} (%d tensor pairs)", S6_records), \
+     frames(2) using 3:(1.0 / S2_records) smooth cumulative with lines lw 2 title sprintf("vertices within 2 d_{res} (%d tensor pairs)", S2_records)
 unset multiplot
