@@ -6,10 +6,12 @@
  * Each experiment writes one CSV into --out (default bench_results/) and prints a summary table.
  * Third-party data is read from ../shared/data (PCL_TENSOR_SHARED_DATA) or --data DIR.
  */
+#include "eval/eval_main.h"
 #include "eval/eval_views.h"
 #include "eval/fpfh_baseline.h"
 #include "eval/match_diagnosis.h"
 #include "eval/pair_evaluation.h"
+#include "eval/pair_runs.h"
 #include "eval/pair_summary.h"
 
 #include <pcl/common/time.h>
@@ -26,7 +28,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iostream>
 
 #include <sys/wait.h>
 
@@ -122,64 +123,6 @@ namespace
     return pairs;
   }
 
-  void
-  printViews (const EvalViews& views, const pcl::ObjectDimensions& dims)
-  {
-    std::printf ("D = [%.4f %.4f %.4f]\n", dims.D[0], dims.D[1], dims.D[2]);
-    for (const EvalView& v : views)
-      std::printf ("  %-10s %6zu points, d_res %.6f, %4zu tensors, prepare %.0f ms, tensors %.0f ms\n", v.name.c_str (),
-                   v.finite_points, v.prepared->resolution, v.tensors->size (), v.prepare_ms, v.tensors_ms);
-  }
-
-  /** Register every pair with the tensor method; \a overlaps are filled in on first use. */
-  std::vector<PairResult>
-  runTensorPairs (const EvalViews& views, const pcl::ObjectDimensions& dims, const std::vector<std::pair<int, int>>& pairs,
-                  const Options& o)
-  {
-    std::vector<PairResult> results;
-    for (const auto& [m, s] : pairs)
-    {
-      PairResult r = evaluateTensorPair (views[m], views[s], dims, o.params);
-      r.overlap = pairOverlap (views[m], views[s]);
-      std::printf ("  %-9s <- %-9s overlap %.3f  %-14s rot %8.3f deg  trans %8.2f d_res  hyp %5zu/%-5zu %8.0f ms\n",
-                   r.model.c_str (), r.scene.c_str (), r.overlap,
-                   r.correct ? "correct" : r.registered ? "WRONG" : "not registered", r.rotation_error_deg,
-                   r.translation_error_res, r.hypotheses, r.matches, r.time_ms);
-      results.push_back (r);
-    }
-    return results;
-  }
-
-  /** The baseline on every pair; the per-view features are computed once, like the tensors. */
-  std::vector<PairResult>
-  runFpfhPairs (const EvalViews& views, const std::vector<std::pair<int, int>>& pairs, const Options& o)
-  {
-    std::vector<FpfhView> features;
-    for (const EvalView& v : views)
-    {
-      features.push_back (computeFpfhView (*v.cloud, v.viewpoint, v.prepared->resolution, o.baseline));
-      std::printf ("  %-10s FPFH: %zu points, %.0f ms\n", v.name.c_str (), features.back ().points->size (),
-                   features.back ().time_ms);
-    }
-    std::vector<PairResult> results;
-    for (const auto& [m, s] : pairs)
-    {
-      PairResult r;
-      const FpfhResult f = registerFpfh (features[m], features[s], pairResolution (views[m], views[s]), o.baseline,
-                                         o.params.verification);
-      scoreTransform (views[m], views[s], f.registered, f.transform, r);
-      r.overlap = pairOverlap (views[m], views[s]);
-      r.time_ms = f.sac_ms + f.icp_ms;
-      r.matches = f.inliers;
-      std::printf ("  %-9s <- %-9s overlap %.3f  %-14s rot %8.3f deg  trans %8.2f d_res  inliers %5zu  %8.0f ms\n",
-                   r.model.c_str (), r.scene.c_str (), r.overlap,
-                   r.correct ? "correct" : r.registered ? "WRONG" : "not registered", r.rotation_error_deg,
-                   r.translation_error_res, f.inliers, r.time_ms);
-      results.push_back (r);
-    }
-    return results;
-  }
-
   /** Matching or verification: where the tensor method loses each pair. */
   void
   runDiagnosis (const EvalViews& views, const pcl::ObjectDimensions& dims, const std::vector<std::pair<int, int>>& pairs,
@@ -221,7 +164,7 @@ namespace
     if (tensor)
     {
       std::printf ("\nTensor method (max_hypotheses %d):\n", o.params.max_hypotheses);
-      const auto results = runTensorPairs (views, dims, pairs, o);
+      const auto results = runTensorPairs (views, dims, pairs, o.params);
       writePairCsv (o.out + "/real_tensor.csv", results);
       printPairSummary ("real bunny pairs, tensor method", results);
     }
@@ -230,7 +173,8 @@ namespace
     if (baseline)
     {
       std::printf ("\nFPFH + SampleConsensusPrerejective + ICP (leaf %.2f d_res):\n", o.baseline.leaf_resolutions);
-      const auto results = runFpfhPairs (views, pairs, o);
+      const auto results = runFpfhPairs (views, computeFpfhViews (views, o.baseline), pairs, o.baseline,
+                                         o.params.verification);
       writePairCsv (o.out + "/real_fpfh.csv", results);
       printPairSummary ("real bunny pairs, FPFH baseline", results);
     }
@@ -248,7 +192,7 @@ namespace
     const pcl::ObjectDimensions dims = prepareViews (views, o.params);
     printViews (views, dims);
     const auto pairs = limited (pcl::adjacentViewPairs (pcl::makeDefaultViewDirections (view_params.up)), o);
-    const auto results = runTensorPairs (views, dims, pairs, o);
+    const auto results = runTensorPairs (views, dims, pairs, o.params);
     writePairCsv (o.out + "/synthetic_" + label + ".csv", results);
     printPairSummary ("synthetic " + label + ", adjacent pairs (30 deg)", results);
   }
@@ -376,20 +320,5 @@ namespace
 int
 main (int argc, char** argv)
 {
-  if (argc < 2 || pcl::console::find_switch (argc, argv, "-h") || pcl::console::find_switch (argc, argv, "--help"))
-  {
-    printHelp (argv[0]);
-    return argc < 2 ? 2 : 0;
-  }
-  // Line-buffered even into a file: long runs are followed with tail -f.
-  std::setvbuf (stdout, nullptr, _IOLBF, 0);
-  try
-  {
-    return run (argc, argv);
-  }
-  catch (const std::exception& e)
-  {
-    std::cerr << "eval_pairwise: error: " << e.what () << std::endl;
-    return 1;
-  }
+  return evalMain (argc, argv, "eval_pairwise", printHelp, run);
 }

@@ -8,6 +8,8 @@
 #include <pcl/io/stanford_conf.h>
 #include <pcl/simulation/view_set.h>
 
+#include <cstdio>
+
 namespace pcl_tensor_eval
 {
   EvalViews
@@ -67,6 +69,15 @@ namespace pcl_tensor_eval
       v.tensors_ms = watch.getTime ();
     }
     return dims;
+  }
+
+  void
+  printViews (const EvalViews& views, const pcl::ObjectDimensions& dims)
+  {
+    std::printf ("D = [%.4f %.4f %.4f]\n", dims.D[0], dims.D[1], dims.D[2]);
+    for (const EvalView& v : views)
+      std::printf ("  %-10s %6zu points, d_res %.6f, %4zu tensors, prepare %.0f ms, tensors %.0f ms\n", v.name.c_str (),
+                   v.finite_points, v.prepared->resolution, v.tensors->size (), v.prepare_ms, v.tensors_ms);
   }
 
   std::vector<std::pair<int, int>>

@@ -64,6 +64,10 @@ namespace pcl_tensor_eval
     return model.pose.inverse () * scene.pose;
   }
 
+  /** \brief Print D and one line per prepared view (points, d_res, tensors, times). */
+  void
+  printViews (const EvalViews& views, const pcl::ObjectDimensions& dims);
+
   /** \brief All pairs (i < j) of \a n views, model = i, scene = j. */
   std::vector<std::pair<int, int>>
   allPairs (int n);

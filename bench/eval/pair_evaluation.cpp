@@ -66,7 +66,8 @@ namespace pcl_tensor_eval
 
   PairResult
   evaluateTensorPair (const EvalView& model, const EvalView& scene, const pcl::ObjectDimensions& dims,
-                      const pcl::registration::TensorRegistrationParams& params)
+                      const pcl::registration::TensorRegistrationParams& params,
+                      pcl::registration::TensorRegistrationReport* full_report)
   {
     pcl::registration::TensorRegistrationReport report;
     pcl::StopWatch watch;
@@ -77,6 +78,8 @@ namespace pcl_tensor_eval
     result.hypotheses = report.hypotheses_tried;
     result.matches = report.matches;
     result.failures = report.failures;
+    if (full_report)
+      *full_report = report;
     return result;
   }
 }
