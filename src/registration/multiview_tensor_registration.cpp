@@ -62,7 +62,7 @@ namespace pcl
           }
           catch (const InvalidScanException& e)
           {
-            view.error = e.what ();
+            view.error = errorDescription (e);
           }
           view.prepare_ms = watch.getTime ();
           report (progress, MultiviewStage::PREPARATION, i + 1, inputs.size ());
@@ -111,7 +111,7 @@ namespace pcl
             }
             catch (const InvalidScanException& e)
             {
-              view.error = e.what ();
+              view.error = errorDescription (e);
             }
             view.tensors_ms = watch.getTime ();
           }

@@ -12,9 +12,11 @@ set(PCL_TENSOR_BAD_INPUTS empty.ply directory.ply truncated.ply wrong_count.ply 
     duplicates.ply two_points.ply collinear.ply empty.pcd garbage.pcd)
 
 # pcl_tensor_bad_input_tests(PREFIX COMMAND app args... @INPUT@ args...): one test PREFIX_bad_<file> per
-# bad file (@INPUT@ is replaced by its path), a missing file and an unreadable one; all expect exit 2.
+# bad file (@INPUT@ is replaced by its path), a missing file and an unreadable one; all expect exit 2,
+# but those listed after NOT_REGISTERED: files that load but hold no usable scan, which an app that
+# goes on with the other views reports as not registered (exit 3).
 function(pcl_tensor_bad_input_tests prefix)
-  cmake_parse_arguments(ARG "" "" "COMMAND" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "COMMAND;NOT_REGISTERED" ${ARGN})
   foreach(file IN LISTS PCL_TENSOR_BAD_INPUTS ITEMS missing.ply unreadable.ply)
     set(input ${BAD}/${file})
     string(REPLACE "." "_" case "${file}")
@@ -23,7 +25,11 @@ function(pcl_tensor_bad_input_tests prefix)
     if(file STREQUAL "unreadable.ply")
       set(unreadable ${input})
     endif()
-    pcl_tensor_app_test(${prefix}_bad_${case} 2 UNREADABLE "${unreadable}" COMMAND ${command})
+    set(expected 2)
+    if(file IN_LIST ARG_NOT_REGISTERED)
+      set(expected 3)
+    endif()
+    pcl_tensor_app_test(${prefix}_bad_${case} ${expected} UNREADABLE "${unreadable}" COMMAND ${command})
     set_tests_properties(${prefix}_bad_${case} PROPERTIES FIXTURES_REQUIRED "bad_inputs;register_views" TIMEOUT 300)
   endforeach()
 endfunction()

@@ -24,8 +24,11 @@ pcl_tensor_case(app_model_wrong_view_refused 3 EXPECTED_FILE ${MODEL_OUT}/wrong.
                         --viewpoint 0,0,0 -o ${MODEL_OUT}/wrong.ply)
 set_tests_properties(app_model_wrong_view_refused PROPERTIES FIXTURES_REQUIRED "register_views;other_views")
 
-# Usage errors and bad files: exit 2 with one line, before any work.
-pcl_tensor_bad_input_tests(app_model COMMAND ${MODEL} ${VIEW0} @INPUT@ -o ${MODEL_OUT}/bad.ply)
+# Usage errors and bad files: exit 2 with one line, before any work. A file that loads but cannot be
+# meshed (all points duplicates, or on a line) is one unusable view of many: it is named, left out, and
+# the model is built from the others (exit 3).
+pcl_tensor_bad_input_tests(app_model COMMAND ${MODEL} ${VIEW0} @INPUT@ -o ${MODEL_OUT}/bad.ply
+                           NOT_REGISTERED duplicates.ply collinear.ply)
 pcl_tensor_case(app_model_no_output 2 COMMAND ${MODEL} ${VIEW0} ${VIEW1})
 pcl_tensor_case(app_model_one_view 2 COMMAND ${MODEL} ${VIEW0} -o ${MODEL_OUT}/one.ply)
 pcl_tensor_case(app_model_output_folder_missing 2 COMMAND ${MODEL} ${VIEW0} ${VIEW1} -o /nonexistent/model.ply)
