@@ -129,7 +129,7 @@ namespace
                 const Options& o)
   {
     std::vector<MatchDiagnosis> rows;
-    std::array<std::size_t, 5> stages{};
+    std::array<std::size_t, pcl::registration::kTensorVerificationStages> stages{};
     int with_good = 0, good_all_rejected = 0;
     std::size_t bad_passed = 0;
     for (const auto& [m, s] : pairs)

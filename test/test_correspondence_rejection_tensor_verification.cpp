@@ -112,3 +112,54 @@ TEST (CorrespondenceRejectorTensorVerification, MissingInputThrows)
   pcl::Correspondences kept;
   EXPECT_THROW (rejector.getRemainingCorrespondences (pcl::Correspondences (1), kept), pcl::BadArgumentException);
 }
+
+TEST (CorrespondenceRejectorTensorVerification, SurfaceInSpaceTheOtherSensorSawEmptyIsRefused)
+{
+  // The scene is the model's own range image with the points of a central block of the image (about
+  // 30% of the view) moved 4 d_res toward the sensor: at the exact pose (identity) everything the
+  // paper checks passes, but that block sits where the model's sensor saw nothing.
+  pcl::SyntheticViewParams params;
+  params.camera.width = params.camera.height = 300;
+  const auto rendered = pcl::renderSyntheticViews (pcl::makeExampleObject (), pcl::makeRingViewDirections (1, 30.0), params);
+  const pcl::RenderedView& view = rendered[0].view;
+  pcl::PointCloud<pcl::PointXYZ>::Ptr raised (new pcl::PointCloud<pcl::PointXYZ> (*view.cloud));
+  const double lift = 4.0 * rendered[0].resolution;
+  for (std::uint32_t r = 110; r < 190; ++r)
+    for (std::uint32_t c = 110; c < 190; ++c)
+    {
+      pcl::PointXYZ& p = raised->at (c, r);
+      if (std::isfinite (p.x))
+      {
+        const Eigen::Vector3d q = p.getVector3fMap ().cast<double> ();
+        p.getVector3fMap () = (q + lift * view.viewpoint.towardSensor (q).normalized ()).cast<float> ();
+      }
+    }
+  const TensorRegistrationParams defaults;
+  const auto model = std::make_shared<pcl::PreparedScan> (pcl::prepareScan (*view.cloud, view.viewpoint, defaults.preparation));
+  const auto scene = std::make_shared<pcl::PreparedScan> (pcl::prepareScan (*raised, view.viewpoint, defaults.preparation));
+  const auto dims = pcl::computeObjectDimensions<pcl::PointNormal> ({model->fine.cloud.get ()});
+
+  CorrespondenceRejectorTensorVerification rejector;
+  rejector.setModel (model, computeViewTensors (*model, dims, defaults));
+  rejector.setScene (scene, computeViewTensors (*scene, dims, defaults));
+  rejector.setObjectDimensions (dims);
+  TensorVerificationParams p = defaults.verification;
+  p.icp_iterations = 0;  // judge the exact pose itself
+  rejector.setParams (p);
+  TensorVerificationResult result;
+  EXPECT_FALSE (rejector.verify (Eigen::Matrix4f::Identity (), result));
+  EXPECT_EQ (result.stage, TensorVerificationStage::FREE_SPACE) << toString (result.stage);
+  EXPECT_GT (result.free_space_violation, 0.15);
+  EXPECT_LT (result.free_space_violation, 0.45);
+
+  // The unchanged view against itself has nothing in front of its own surface.
+  rejector.setScene (model, computeViewTensors (*model, dims, defaults));
+  EXPECT_TRUE (rejector.verify (Eigen::Matrix4f::Identity (), result)) << toString (result.stage);
+  EXPECT_EQ (result.free_space_violation, 0.0);
+
+  // With the check disabled the raised view passes: the paper's checks alone do not see it.
+  p.free_space_fraction = 1.0;
+  rejector.setParams (p);
+  rejector.setScene (scene, computeViewTensors (*scene, dims, defaults));
+  EXPECT_TRUE (rejector.verify (Eigen::Matrix4f::Identity (), result)) << toString (result.stage);
+}

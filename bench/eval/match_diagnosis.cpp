@@ -68,7 +68,7 @@ namespace pcl_tensor_eval
     if (!out)
       throw std::runtime_error ("cannot write " + path);
     out << "model,scene,overlap,matches,good_hypotheses,first_good_rank,good_passed,good_fail_coarse_dimensions,"
-           "good_fail_coarse_overlap,good_fail_fine_overlap,good_fail_fine_dimensions,bad_passed_wrong\n";
+           "good_fail_coarse_overlap,good_fail_fine_overlap,good_fail_fine_dimensions,good_fail_free_space,bad_passed_wrong\n";
     for (const MatchDiagnosis& d : rows)
     {
       out << d.model << ',' << d.scene << ',' << d.overlap << ',' << d.matches << ',' << d.good << ',' << d.first_good_rank;

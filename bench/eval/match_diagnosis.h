@@ -25,7 +25,7 @@ namespace pcl_tensor_eval
     std::size_t matches = 0;
     std::size_t good = 0;                 ///< matches whose hypothesis is good
     long first_good_rank = -1;            ///< 0-based position of the first good one in the verification order
-    std::array<std::size_t, 5> good_stage{};  ///< the good ones, by verification stage reached (0: passed)
+    std::array<std::size_t, pcl::registration::kTensorVerificationStages> good_stage{};  ///< the good ones, by verification stage reached (0: passed)
     std::size_t bad_passed = 0;           ///< matches with a bad hypothesis that passed verification (wrong answers)
   };
 

@@ -33,7 +33,7 @@ namespace pcl_tensor_eval
     /** Registered, rotation error within the bound, and centroid error within the translation bound. */
     bool correct_at_centroid = false;
     std::size_t hypotheses = 0, matches = 0;
-    std::array<std::size_t, 5> failures{};  ///< tensor method: failures per verification stage
+    std::array<std::size_t, pcl::registration::kTensorVerificationStages> failures{};  ///< tensor method: failures per verification stage
     double time_ms = 0.0;
     /** A registration was reported, and it is wrong: the one outcome that must never happen. */
     bool wrong () const { return registered && !correct; }

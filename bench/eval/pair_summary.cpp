@@ -20,7 +20,7 @@ namespace pcl_tensor_eval
     if (!out)
       throw std::runtime_error ("cannot write " + path);
     out << "model,scene,overlap,resolution,registered,correct,wrong,rotation_error_deg,translation_error_res,"
-           "centroid_error_res,correct_at_centroid,hypotheses,matches,fail_coarse_dimensions,fail_coarse_overlap,fail_fine_overlap,fail_fine_dimensions,time_ms\n";
+           "centroid_error_res,correct_at_centroid,hypotheses,matches,fail_coarse_dimensions,fail_coarse_overlap,fail_fine_overlap,fail_fine_dimensions,fail_free_space,time_ms\n";
     out << std::setprecision (6);
     for (const PairResult& r : results)
     {

@@ -24,6 +24,7 @@ namespace pcl
         case TensorVerificationStage::COARSE_OVERLAP: return "coarse_overlap";
         case TensorVerificationStage::FINE_OVERLAP: return "fine_overlap";
         case TensorVerificationStage::FINE_DIMENSIONS: return "fine_dimensions";
+        case TensorVerificationStage::FREE_SPACE: return "free_space";
       }
       return "unknown";
     }
@@ -58,6 +59,9 @@ namespace pcl
       if (!(p.coarse_dimension_fraction >= 0.0) || !(p.fine_dimension_tolerance >= 0.0) ||
           !std::isfinite (p.coarse_dimension_fraction) || !std::isfinite (p.fine_dimension_tolerance))
         PCL_TENSOR_THROW (BadArgumentException, "verification: dimension tolerances must be finite and non-negative");
+      if (!positive (p.free_space_distance) || !(p.free_space_fraction >= 0.0 && p.free_space_fraction <= 1.0))
+        PCL_TENSOR_THROW (BadArgumentException, "verification: free-space distance must be positive and its fraction in [0, 1], got "
+                          << p.free_space_distance << " and " << p.free_space_fraction);
       if (p.checked_dimensions < 1 || p.checked_dimensions > 3 || p.icp_iterations < 0 || p.sample_points < 1)
         PCL_TENSOR_THROW (BadArgumentException, "verification: checked dimensions must be 1..3, ICP iterations >= 0 and sample points >= 1");
       params_ = params;
@@ -78,6 +82,8 @@ namespace pcl
       if (!model_ || !scene_ || model_->fine.cloud->empty () || scene_->fine.cloud->empty ())
         PCL_TENSOR_THROW (BadArgumentException, "verification needs the prepared model and scene views");
       model_tree_.setInputCloud (model_->fine.cloud);
+      model_view_.reset ();
+      scene_view_.reset ();
 
       // An even, deterministic sample: every k-th fine scene vertex.
       const PointCloudN& scene = *scene_->fine.cloud;
@@ -105,6 +111,46 @@ namespace pcl
           ++count;
       }
       return count;
+    }
+
+    namespace
+    {
+      /** Of the points of \a from (under \a t) that \a to's sensor saw with a trusted surface behind
+        * them, the fraction lying more than \a margin in front of that surface. Points behind it are
+        * fine: that sensor could not see them. */
+      double
+      violationFraction (const pcl::PointCloud<pcl::PointNormal>& from, const Eigen::Matrix4f& t,
+                         const RangeViewProjection& to, double margin)
+      {
+        // Surfaces near a view's border or seen at a grazing angle are not trusted (weight < 0.3).
+        constexpr float kMinWeight = 0.3f;
+        constexpr std::size_t kSamples = 4000;
+        constexpr std::size_t kMinSeen = 50;  // fewer: too little seen by both to judge
+        const std::size_t step = std::max<std::size_t> (1, from.size () / kSamples);
+        std::size_t seen = 0, violating = 0;
+        RangeViewProjection::Sample sample;
+        for (std::size_t i = 0; i < from.size (); i += step)
+        {
+          const Eigen::Vector3f p = (t * from[i].getVector4fMap ()).head<3> ();
+          if (!to.sample (p, sample) || sample.weight < kMinWeight)
+            continue;
+          ++seen;
+          violating += sample.distance > margin ? 1 : 0;
+        }
+        return seen < kMinSeen ? 0.0 : static_cast<double> (violating) / static_cast<double> (seen);
+      }
+    }
+
+    double
+    CorrespondenceRejectorTensorVerification::freeSpaceViolation (const Eigen::Matrix4f& t, double margin)
+    {
+      // The z-buffers are built only for hypotheses that got this far, once per pair of views.
+      if (!model_view_)
+        model_view_ = std::make_unique<RangeViewProjection> (model_->fine, 3.0, 2.0, 16u << 20, model_->resolution);
+      if (!scene_view_)
+        scene_view_ = std::make_unique<RangeViewProjection> (scene_->fine, 3.0, 2.0, 16u << 20, scene_->resolution);
+      return std::max (violationFraction (*scene_->fine.cloud, t, *model_view_, margin),
+                       violationFraction (*model_->fine.cloud, t.inverse (), *scene_view_, margin));
     }
 
     double
@@ -181,6 +227,15 @@ namespace pcl
       if (result.fine_dimension_excess > params_.fine_dimension_tolerance)
       {
         result.stage = TensorVerificationStage::FINE_DIMENSIONS;
+        return false;
+      }
+
+      // Beyond the paper: neither view may put surface where the other's sensor saw through.
+      result.free_space_violation = freeSpaceViolation (result.transform, std::max (params_.free_space_distance * d_res,
+                                                                                    3.0 * result.icp_fitness));
+      if (result.free_space_violation > params_.free_space_fraction)
+      {
+        result.stage = TensorVerificationStage::FREE_SPACE;
         return false;
       }
       result.stage = TensorVerificationStage::PASSED;

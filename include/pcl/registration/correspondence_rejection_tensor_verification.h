@@ -8,7 +8,10 @@
 #include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/registration/correspondence_rejection.h>
 #include <pcl/registration/tensor_verification.h>
+#include <pcl/surface/range_view_projection.h>
 #include <pcl/surface/scan_preparation.h>
+
+#include <memory>
 
 namespace pcl
 {
@@ -91,6 +94,8 @@ namespace pcl
         void prepare ();
         /** Scene points of \a cloud, under \a t, with a model point within \a radius. */
         std::size_t countCorrespondences (const PointCloudN& cloud, const Eigen::Matrix4f& t, double radius) const;
+        /** The larger free-space violation of the two views under \a t (TensorVerificationParams). */
+        double freeSpaceViolation (const Eigen::Matrix4f& t, double margin);
         /** max(D_combined - D) of the model points and the transformed scene points. */
         double dimensionExcess (const PointCloudN& model, const PointCloudN& scene, const Eigen::Matrix4f& t) const;
 
@@ -102,6 +107,7 @@ namespace pcl
         bool prepared_{false};
 
         pcl::KdTreeFLANN<pcl::PointNormal> model_tree_;
+        std::unique_ptr<RangeViewProjection> model_view_, scene_view_;
         PointCloudN::Ptr scene_sample_{new PointCloudN};
         std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> accepted_transforms_;
     };

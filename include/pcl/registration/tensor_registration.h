@@ -80,7 +80,7 @@ namespace pcl
         * (global verification, Section 4.2). */
       std::size_t hypotheses_refused = 0;
       /** How many hypotheses failed at each stage (index: TensorVerificationStage). */
-      std::array<std::size_t, 5> failures{};
+      std::array<std::size_t, kTensorVerificationStages> failures{};
       TensorMatch winning_match;                ///< valid when registered
       TensorVerificationResult verification;    ///< of the winning hypothesis when registered
       double resolution = 0.0;                  ///< d_res used by verification
