@@ -136,7 +136,7 @@ namespace
         p.normal_z = 1.f;
         plane.mesh.cloud->push_back (p);
       }
-    auto id = [m, side] (int i, int j) { return (j + m) * side + (i + m); };
+    auto id = [=] (int i, int j) { return (j + m) * side + (i + m); };
     for (int j = -m; j < m; ++j)
       for (int i = -m; i < m; ++i)
       {
