@@ -27,7 +27,6 @@ using namespace pcl::console;
 namespace
 {
   constexpr int kExitModelled = 0;
-  constexpr int kExitNotAllRegistered = 3;
 
   void
   printHelp (const char* name)
@@ -306,7 +305,7 @@ namespace
       std::cout << jsonSummary (o, result, integration.getReport (), model, t) << std::endl;
     else
       printText (result, model, t, o);
-    return reportRefusedViews (result) > 0 ? kExitNotAllRegistered : kExitModelled;
+    return reportRefusedViews (result) > 0 ? pcl_tensor_tools::kExitNotRegistered : kExitModelled;
   }
 }
 

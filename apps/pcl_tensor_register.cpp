@@ -21,7 +21,7 @@ using namespace pcl::console;
 namespace
 {
   constexpr int kExitRegistered = 0;
-  constexpr int kExitNotRegistered = 3;
+  using pcl_tensor_tools::kExitNotRegistered;
 
   void
   printHelp (const char* name)

@@ -17,6 +17,8 @@ namespace pcl_tensor_tools
 {
   /** Exit code for bad input or usage, with one line on stderr. */
   constexpr int kExitBadInput = 2;
+  /** Exit code when views could not be registered (verification refused every hypothesis). */
+  constexpr int kExitNotRegistered = 3;
 
   /** Run a tool: --help (or no argument) prints \a help; a pcl::PCLException from \a run becomes one
     * line on stderr and exit code 2; any other exception is an internal error (exit code 1). */
