@@ -1,15 +1,26 @@
 #!/usr/bin/env bash
-# The second CI configuration: the whole test suite (GoogleTest and app tests) built with clang,
-# AddressSanitizer (LeakSanitizer on) and UndefinedBehaviorSanitizer; any finding fails the run.
-# The same instrumented build holds the libFuzzer targets, which scripts/fuzz.sh then runs.
-# Run after scripts/test.sh (which installs the packages, clang included). The bench is not built
-# (nothing tests it), and downstream_find_package is left out: a downstream build without the
-# sanitizer flags cannot link an instrumented library; scripts/test.sh tests the packaging.
+# The second CI configuration: tests built with clang, AddressSanitizer (LeakSanitizer on) and
+# UndefinedBehaviorSanitizer; any finding fails the run. The same instrumented build holds the
+# libFuzzer targets, which scripts/fuzz.sh then runs. Run after scripts/test.sh (which installs the
+# packages, clang included). The bench is not built, and downstream_find_package is left out: a
+# downstream build without the sanitizer flags cannot link an instrumented library.
+#
+#   bash scripts/test_sanitizers.sh          # the whole suite (about 10x slower than Release)
+#   bash scripts/test_sanitizers.sh --ci     # the bad-input matrix: test_hardening and every app's
+#                                            # bad-input and parameter cases; what CI runs, to stay in
+#                                            # its time limit
 set -euo pipefail
 cd "$(dirname "$0")/.."
 CC=clang CXX=clang++ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Release \
   -DPCL_TENSOR_BUILD_FUZZERS=ON -DPCL_TENSOR_BUILD_BENCH=OFF > /dev/null
-cmake --build build-sanitize -j2
+if [ "${1:-}" = "--ci" ]; then
+  cmake --build build-sanitize -j2 --target test_hardening pcl_tensor_register pcl_tensor_mesh pcl_tensor_views \
+    pcl_tensor_model fuzz_stanford_conf fuzz_range_scan fuzz_mesh_tensors
+  selection=(-R '^Hardening|_bad_|_param|coplanar|no_faces|^app_register_make_views$|^app_make_bad_inputs$')
+else
+  cmake --build build-sanitize -j2
+  selection=(-E '^downstream_find_package$')
+fi
 source scripts/sanitizer_env.sh
 cd build-sanitize
-ctest -j2 --output-on-failure --timeout 1800 -E '^downstream_find_package$'
+ctest -j2 --output-on-failure --timeout 1800 "${selection[@]}"
