@@ -170,6 +170,25 @@ TEST (HardeningLoadRangeScan, BrokenFilesThrowIOException)
     c = static_cast<char> (rng () & 0xff);
   EXPECT_THROW (pcl::io::loadRangeScan (writeFile ("garbage.ply", garbage)), pcl::IOException);
   EXPECT_THROW (pcl::io::loadRangeScan (writeFile ("garbage.pcd", garbage)), pcl::IOException);
+  // Found by fuzz_range_scan: a SIZE PCL's PCD reader turns into a buffer no vector can hold
+  // (std::length_error from inside PCL).
+  const std::string huge_size = "\x01# .PCD v0.7\n"
+                                  "VERSION 0.7\n"
+                                  "FIELDS x y z\n"
+                                  "SIZE 5 4 ccccccccccccccccccccccccccccccccccccccccccccccccccccccccccccccccccccccccccccccccccccc4\n"
+                                  "TYPE F F F\n"
+                                  "COUNT 1 1 1\n"
+                                  "WIDTH 5\n"
+                                  "HEIGHT 1\n"
+                                  "VIEWPOINT 0 0 -b1 1 0 0 0\n"
+                                  "POINTS 4444444444444444444444444444444444444444444444444444444444444444444444444444444444444444444444445\n"
+                                  "DATA ascii\n"
+                                  "0 0 1\n"
+                                  "1 01\n"
+                                  "  01 1.2\n"
+                                  "1 1 0.9\n"
+                                  "0.5 0";
+  EXPECT_THROW (pcl::io::loadRangeScan (writeFile ("huge_size.pcd", huge_size)), pcl::IOException);
 }
 
 TEST (HardeningLoadRangeScan, UnreadableFileThrowsIOException)

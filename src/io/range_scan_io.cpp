@@ -14,6 +14,8 @@
 #include <boost/algorithm/string/case_conv.hpp>
 
 #include <fstream>
+#include <new>
+#include <stdexcept>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -141,7 +143,22 @@ namespace pcl
       {
         pcl::PCLPointCloud2 blob;
         int version = 0;
-        if (reader.read (path, blob, cloud.sensor_origin_, cloud.sensor_orientation_, version) < 0)
+        int status = -1;
+        try
+        {
+          status = reader.read (path, blob, cloud.sensor_origin_, cloud.sensor_orientation_, version);
+        }
+        catch (const std::length_error&)
+        {
+          // PCL's PCD reader sizes buffers from the header unchecked: a garbage SIZE asks for more
+          // than a vector can hold (found by fuzz_range_scan).
+          status = -1;
+        }
+        catch (const std::bad_alloc&)
+        {
+          status = -1;
+        }
+        if (status < 0)
           PCL_TENSOR_THROW (pcl::IOException, "cannot parse '" << path << "'");
         const std::size_t points = static_cast<std::size_t> (blob.width) * blob.height;
         if (points == 0)
