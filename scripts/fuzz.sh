@@ -20,7 +20,7 @@ for t in $TARGETS; do
   echo "== fuzz_$t for ${SECONDS_EACH} s"
   log="build-sanitize/fuzz_$t.log"
   if ! ./build-sanitize/test/fuzz/fuzz_$t "$work" "test/fuzz/corpus/$t" -max_total_time="$SECONDS_EACH" \
-       -max_len=4096 -timeout=10 -rss_limit_mb=2048 -artifact_prefix="$findings/" -print_final_stats=1 > "$log" 2>&1; then
+       -seed=2006 -max_len=4096 -timeout=10 -rss_limit_mb=2048 -artifact_prefix="$findings/" -print_final_stats=1 > "$log" 2>&1; then
     tail -n 60 "$log"
     echo "fuzz_$t found a problem: the input is in $findings"
     exit 1
