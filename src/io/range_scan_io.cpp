@@ -16,6 +16,8 @@
 #include <fstream>
 #include <new>
 #include <stdexcept>
+#include <cctype>
+#include <map>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -54,9 +56,52 @@ namespace pcl
 
     namespace
     {
+      /** The unsigned numbers of one PCD header line; anything else is a broken header. */
+      std::vector<unsigned long long>
+      pcdNumbers (const std::vector<std::string>& values, const std::string& path, int line_no)
+      {
+        std::vector<unsigned long long> out;
+        for (const auto& v : values)
+        {
+          std::size_t used = 0;
+          unsigned long long n = 0;
+          try
+          {
+            n = std::isdigit (static_cast<unsigned char> (v[0])) ? std::stoull (v, &used) : 0;
+          }
+          catch (const std::exception&)
+          {
+            used = 0;
+          }
+          if (used != v.size ())
+            PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": '" << v << "' is not a size or count");
+          out.push_back (n);
+        }
+        return out;
+      }
+
+      /** PCL's PCD reader allocates points x point size from the header before reading any data, so a
+        * garbage header asks for terabytes (found by fuzz_range_scan). No PCD, even compressed, holds
+        * more than a thousand times its own size. */
+      void
+      requirePlausibleSize (std::map<std::string, std::vector<unsigned long long>>& n, const std::string& path)
+      {
+        const long double file_bytes = static_cast<long double> (std::ifstream (path, std::ios::binary | std::ios::ate).tellg ());
+        long double point_bytes = 0.0L;
+        for (std::size_t i = 0; i < n["SIZE"].size (); ++i)
+          point_bytes += static_cast<long double> (n["SIZE"][i]) * (i < n["COUNT"].size () ? n["COUNT"][i] : 1ULL);
+        const auto first = [&] (const char* key) { return n[key].empty () ? 0.0L : static_cast<long double> (n[key][0]); };
+        const long double points = std::max (first ("POINTS"), first ("WIDTH") * first ("HEIGHT"));
+        const long double limit = std::max (64.0L * (1 << 20), 1024.0L * file_bytes);
+        if (points * point_bytes > limit)
+          PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' claims " << points << " points of " << point_bytes
+                            << " bytes, far more than its " << file_bytes << " bytes can hold");
+      }
+
       /** PCL 1.13's PCDReader segfaults on a file without a complete header (an empty file, text,
         * random bytes), so the header is checked here first: known keywords only, the mandatory
-        * ones present, one SIZE, TYPE and COUNT entry per field, before a single DATA line. */
+        * ones present, one SIZE, TYPE and COUNT entry per field, before a single DATA line, and a
+        * size the file can hold. */
       void
       requirePcdHeader (const std::string& path)
       {
@@ -65,6 +110,7 @@ namespace pcl
         static const std::set<std::string> mandatory = {"FIELDS", "SIZE", "TYPE", "WIDTH", "HEIGHT", "POINTS"};
         std::ifstream in (path, std::ios::binary);
         std::set<std::string> seen;
+        std::map<std::string, std::vector<unsigned long long>> numbers;
         std::size_t fields = 0;
         std::string line;
         for (int line_no = 1; line_no <= 64 && std::getline (in, line); ++line_no)
@@ -84,11 +130,14 @@ namespace pcl
             PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": " << key << " has " << values.size ()
                               << " entries for " << fields << " fields");
           seen.insert (key == "COLUMNS" ? "FIELDS" : key);
+          if (key == "SIZE" || key == "COUNT" || key == "WIDTH" || key == "HEIGHT" || key == "POINTS")
+            numbers[key] = pcdNumbers (values, path, line_no);
           if (key == "DATA")
           {
             for (const auto& k : mandatory)
               if (!seen.count (k))
                 PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no " << k << " line in its PCD header");
+            requirePlausibleSize (numbers, path);
             return;
           }
         }
