@@ -158,13 +158,28 @@ namespace pcl
         if (!std::getline (in, line) || line.rfind ("ply", 0) != 0 || line.find_first_not_of ("\r", 3) != std::string::npos)
           PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' does not start with the PLY magic line");
         unsigned long long vertices = 0, cols = 0, rows = 0;
+        std::set<std::string> coordinates;  // x, y and z among the vertex element's properties
+        bool format = false;
         for (int line_no = 2; line_no <= 1000 && std::getline (in, line); ++line_no)
         {
           std::istringstream words (line);
           std::string key, type;
           words >> key >> type;
+          if (key == "format")
+          {
+            std::string version;
+            words >> version;
+            // PCL asserts on formats it half-recognizes (found by fuzz_range_scan).
+            format = (type == "ascii" || type == "binary_little_endian" || type == "binary_big_endian") && version == "1.0";
+            if (!format)
+              PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": unknown PLY format '" << line << "'");
+          }
           if (key == "end_header")
           {
+            if (!format)
+              PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no format line");
+            if (coordinates.size () != 3)
+              PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no x, y and z vertex properties");
             if (cols > 0 && rows > 0 && cols * rows < vertices)
               PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has " << vertices << " vertices in a grid of "
                                 << cols << " x " << rows << " cells");
@@ -180,6 +195,12 @@ namespace pcl
             words >> (type == "num_cols" ? cols : rows);
           else if (key == "property" && type == "list" && element == "vertex")
             PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": a list property in the vertex element");
+          else if (key == "property" && element == "vertex")
+          {
+            std::string name;
+            if (words >> name && (name == "x" || name == "y" || name == "z"))
+              coordinates.insert (name);
+          }
         }
         PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no end_header line");
       }
