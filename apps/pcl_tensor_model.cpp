@@ -68,20 +68,6 @@ namespace
     pcl::VolumetricIntegrationParams integration;
   };
 
-  std::vector<std::string>
-  viewFiles (int argc, char** argv, const std::vector<std::string>& outputs)
-  {
-    std::vector<int> files = parse_file_extension_argument (argc, argv, ".ply");
-    const std::vector<int> pcds = parse_file_extension_argument (argc, argv, ".pcd");
-    files.insert (files.end (), pcds.begin (), pcds.end ());
-    std::sort (files.begin (), files.end ());
-    std::vector<std::string> views;
-    for (const int i : files)
-      if (std::find (outputs.begin (), outputs.end (), argv[i]) == outputs.end ())
-        views.emplace_back (argv[i]);
-    return views;
-  }
-
   /** Fail before the work, not after it, when an output cannot be written. */
   void
   requireWritableFolder (const std::string& file)
@@ -95,13 +81,7 @@ namespace
   void
   parseDimensions (int argc, char** argv, pcl::registration::MultiviewRegistrationParams& p)
   {
-    std::vector<double> dims;
-    if (parse_x_arguments (argc, argv, "--dims", dims) > 0)
-    {
-      if (dims.size () != 3 || !(dims[0] > 0 && dims[1] > 0 && dims[2] > 0))
-        PCL_TENSOR_THROW (pcl::BadArgumentException, "--dims takes three positive numbers X,Y,Z");
-      p.object_dimensions = Eigen::Vector3d (dims[0], dims[1], dims[2]);
-    }
+    pcl_tensor_tools::parseObjectDimensions (argc, argv, p.object_dimensions);
     double tolerance = 0.0;
     if (parse_argument (argc, argv, "--dims-tolerance", tolerance) >= 0)
     {
@@ -124,7 +104,7 @@ namespace
     requireWritableFolder (o.output);
     requireWritableFolder (o.conf);
     parse_argument (argc, argv, "--pairs", o.pairs);
-    o.views = viewFiles (argc, argv, {o.output, o.conf});
+    o.views = pcl_tensor_tools::scanFileArguments (argc, argv, {o.output, o.conf});
     if (o.views.size () < 2)
       PCL_TENSOR_THROW (pcl::BadArgumentException, "expected at least two VIEW files (.ply or .pcd); see --help");
     o.json = find_switch (argc, argv, "--json");

@@ -105,13 +105,9 @@ namespace
   int
   run (int argc, char** argv)
   {
-    std::vector<int> files = parse_file_extension_argument (argc, argv, ".ply");
-    const std::vector<int> pcds = parse_file_extension_argument (argc, argv, ".pcd");
-    files.insert (files.end (), pcds.begin (), pcds.end ());
-    std::sort (files.begin (), files.end ());
     std::string output;
     parse_argument (argc, argv, "-o", output);
-    files.erase (std::remove_if (files.begin (), files.end (), [&] (int i) { return argv[i] == output; }), files.end ());
+    const std::vector<std::string> files = pcl_tensor_tools::scanFileArguments (argc, argv, {output});
     if (files.size () != 2)
       PCL_TENSOR_THROW (pcl::BadArgumentException, "expected MODEL and SCENE files (.ply or .pcd); see --help");
     const bool json = find_switch (argc, argv, "--json");
@@ -120,20 +116,14 @@ namespace
 
     pcl::registration::TensorRegistration registration;
     registration.setParams (parseParams (argc, argv));
-    std::vector<double> dims;
-    if (parse_x_arguments (argc, argv, "--dims", dims) > 0)
-    {
-      if (dims.size () != 3 || !(dims[0] > 0 && dims[1] > 0 && dims[2] > 0))
-        PCL_TENSOR_THROW (pcl::BadArgumentException, "--dims takes three positive numbers X,Y,Z");
-      pcl::ObjectDimensions d;
-      d.D = Eigen::Vector3d (dims[0], dims[1], dims[2]);
-      registration.setObjectDimensions (d);
-    }
+    pcl::ObjectDimensions dims;
+    if (pcl_tensor_tools::parseObjectDimensions (argc, argv, dims.D))
+      registration.setObjectDimensions (dims);
 
     TicToc timer;
     timer.tic ();
-    const pcl::io::RangeScan model = pcl::io::loadRangeScan (argv[files[0]]);
-    const pcl::io::RangeScan scene = pcl::io::loadRangeScan (argv[files[1]]);
+    const pcl::io::RangeScan model = pcl::io::loadRangeScan (files[0]);
+    const pcl::io::RangeScan scene = pcl::io::loadRangeScan (files[1]);
     const double load_ms = timer.toc ();
     registration.setInputTarget (model.cloud);
     registration.setInputSource (scene.cloud);

@@ -10,7 +10,9 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
+#include <algorithm>
 #include <iostream>
+#include <string>
 #include <vector>
 
 namespace pcl_tensor_tools
@@ -44,6 +46,36 @@ namespace pcl_tensor_tools
       std::cerr << name << ": internal error: " << e.what () << std::endl;
       return 1;
     }
+  }
+
+  /** The scan files on the command line (.ply and .pcd arguments, in their order), without \a outputs
+    * (the values of options such as -o, which name files too). */
+  inline std::vector<std::string>
+  scanFileArguments (int argc, char** argv, const std::vector<std::string>& outputs)
+  {
+    std::vector<int> files = pcl::console::parse_file_extension_argument (argc, argv, ".ply");
+    const std::vector<int> pcds = pcl::console::parse_file_extension_argument (argc, argv, ".pcd");
+    files.insert (files.end (), pcds.begin (), pcds.end ());
+    std::sort (files.begin (), files.end ());
+    std::vector<std::string> scans;
+    for (const int i : files)
+      if (std::find (outputs.begin (), outputs.end (), argv[i]) == outputs.end ())
+        scans.emplace_back (argv[i]);
+    return scans;
+  }
+
+  /** --dims X,Y,Z: the object's dimensions D when they are known.
+    * \return false when the option is absent (\a dims is then left as it is) */
+  inline bool
+  parseObjectDimensions (int argc, char** argv, Eigen::Vector3d& dims)
+  {
+    std::vector<double> d;
+    if (pcl::console::parse_x_arguments (argc, argv, "--dims", d) <= 0)
+      return false;
+    if (d.size () != 3 || !(d[0] > 0 && d[1] > 0 && d[2] > 0))
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "--dims takes three positive numbers X,Y,Z");
+    dims = Eigen::Vector3d (d[0], d[1], d[2]);
+    return true;
   }
 
   /** --viewpoint x,y,z: a perspective sensor at that point, looking at the centroid of \a cloud.
