@@ -5,7 +5,6 @@
 #include <pcl/common/point_tests.h>
 #include <pcl/common/tensor_exceptions.h>
 
-#include <algorithm>
 #include <charconv>
 #include <cstdlib>
 #include <fstream>
@@ -38,18 +37,13 @@ namespace pcl
         bool ascii = false;
         std::vector<PlyElement> elements;
         std::size_t num_cols = 0, num_rows = 0;
-        std::size_t body_offset = 0;
       };
 
-      /** The header's lines up to end_header; false when it is not a PLY header at all. */
+      /** The header's lines up to end_header, read from \a in, which is left at the body; false when
+        * it is not a PLY header at all. */
       bool
-      parseHeader (const std::string& text, PlyHeader& header)
+      parseHeader (std::istream& in, PlyHeader& header)
       {
-        // Only the header goes through a stream: copying a 2 MB body into one costs as much as parsing it.
-        const auto end = text.find ("end_header");
-        if (end == std::string::npos)
-          return false;
-        std::istringstream in (text.substr (0, text.find ('\n', end) + 1));
         std::string line;
         if (!std::getline (in, line) || line.rfind ("ply", 0) != 0)
           return false;
@@ -94,10 +88,7 @@ namespace pcl
             header.elements.back ().properties.push_back (p);
           }
           else if (key == "end_header")
-          {
-            header.body_offset = std::min (text.size (), text.find ('\n', end) + 1);
             return true;
-          }
         }
         return false;
       }
@@ -284,15 +275,15 @@ namespace pcl
       std::ifstream file (path, std::ios::binary);
       if (!file)
         PCL_TENSOR_THROW (pcl::IOException, "cannot open '" << path << "'");
-      const std::string text ((std::istreambuf_iterator<char> (file)), std::istreambuf_iterator<char> ());
       PlyHeader header;
-      if (!parseHeader (text, header) || !header.ascii)
-        return false;
+      if (!parseHeader (file, header) || !header.ascii)
+        return false;  // binary files are left to pcl::PLYReader before their body is read
+      const std::string text ((std::istreambuf_iterator<char> (file)), std::istreambuf_iterator<char> ());
 
       pcl::PointCloud<pcl::PointXYZ> vertices;
       std::vector<long long> cells;
       bool has_vertices = false, has_grid = false;
-      Tokens tokens (text.data () + header.body_offset, text.data () + text.size (), path);
+      Tokens tokens (text.data (), text.data () + text.size (), path);
       for (const auto& e : header.elements)
         if (e.count > text.size ())  // each instance takes at least one byte: refuse before allocating
           tokens.fail ("element " + e.name + " claims " + std::to_string (e.count) + " instances");
