@@ -86,6 +86,38 @@ TEST (RangeScanTriangulation, FacesAreWoundTowardTheSensor)
   }
 }
 
+TEST (RangeScanTriangulation, FoldedTrianglesKeepTheMeshConsistentlyOriented)
+{
+  // Noise across the lines of sight folds some grid triangles away from the sensor (a Delaunay
+  // triangulation on the retinal plane has no folds). Both paths must still wind every triangle the
+  // same way: an edge walked twice in one direction reads as a border to the reduction, which then
+  // cannot collapse it.
+  const auto cloud = pcl_tensor_test::jittered (pcl_tensor_test::makeHeightField (4, 60, 80, 0.005, 0.02), 0.004, 2006);
+  for (const bool delaunay : {false, true})
+  {
+    pcl::RangeScanTriangulation triangulation;
+    triangulation.setForceDelaunay (delaunay);
+    pcl::ScanMesh mesh;
+    triangulation.triangulate (cloud, mesh);
+    std::size_t away = 0;
+    double facing = 0.0;
+    for (const auto& poly : mesh.polygons)
+    {
+      const Eigen::Vector3f a = (*mesh.cloud)[poly.vertices[0]].getVector3fMap ();
+      const Eigen::Vector3f n = ((*mesh.cloud)[poly.vertices[1]].getVector3fMap () - a)
+                                  .cross ((*mesh.cloud)[poly.vertices[2]].getVector3fMap () - a);
+      away += n.z () < 0.0f;
+      facing += n.z ();
+    }
+    if (!delaunay)
+    {
+      EXPECT_GT (away, 100u) << "the jitter must fold triangles for this test to mean anything";
+    }
+    EXPECT_GT (facing, 0.0) << "most of the area faces the sensor";
+    EXPECT_TRUE (pcl_tensor_test::consistentlyOriented (mesh)) << (delaunay ? "Delaunay" : "grid");
+  }
+}
+
 TEST (RangeScanTriangulation, RegularGridKeepsEveryCellAndADepthJumpIsCut)
 {
   // 20 x 10 grid on a pitch of 1, with the right half 50 units behind: every cell of each half gives

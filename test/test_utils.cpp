@@ -4,6 +4,7 @@
 #include <fstream>
 #include <limits>
 #include <random>
+#include <set>
 
 namespace pcl_tensor_test
 {
@@ -130,5 +131,28 @@ namespace pcl_tensor_test
       }
     cloud.is_dense = false;
     return cloud;
+  }
+
+  pcl::PointCloud<pcl::PointXYZ>
+  jittered (const pcl::PointCloud<pcl::PointXYZ>& cloud, double sigma, std::uint32_t seed)
+  {
+    std::mt19937 rng (seed);
+    std::normal_distribution<float> noise (0.0f, static_cast<float> (sigma));
+    pcl::PointCloud<pcl::PointXYZ> out = cloud;
+    for (auto& p : out)
+      if (std::isfinite (p.x))
+        p.getVector3fMap () += Eigen::Vector3f (noise (rng), noise (rng), noise (rng));
+    return out;
+  }
+
+  bool
+  consistentlyOriented (const pcl::ScanMesh& mesh)
+  {
+    std::set<std::pair<pcl::index_t, pcl::index_t>> directed;
+    for (const auto& poly : mesh.polygons)
+      for (std::size_t e = 0; e < poly.vertices.size (); ++e)
+        if (!directed.emplace (poly.vertices[e], poly.vertices[(e + 1) % poly.vertices.size ()]).second)
+          return false;
+    return true;
   }
 }

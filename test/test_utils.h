@@ -51,6 +51,7 @@ namespace pcl_tensor_test
   if (var.empty ())                                                                         \
     GTEST_SKIP () << "SKIPPED: ../shared/data/" << (relative) << " is absent (third-party data)"
 
+#include <pcl/common/scan_mesh.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
@@ -66,4 +67,15 @@ namespace pcl_tensor_test
     */
   pcl::PointCloud<pcl::PointXYZ>
   makeHeightField (std::uint32_t seed, int rows, int cols, double pitch, double hole_fraction);
+
+  /** \brief \a cloud with every finite point moved by Gaussian noise of \a sigma in each coordinate,
+    * seeded. Across the lines of sight, as a perspective scan's noise seen along +z, it folds some
+    * triangles over so that they face away from the sensor.
+    */
+  pcl::PointCloud<pcl::PointXYZ>
+  jittered (const pcl::PointCloud<pcl::PointXYZ>& cloud, double sigma, std::uint32_t seed);
+
+  /** \brief True when no directed edge occurs twice: the faces are consistently oriented. */
+  bool
+  consistentlyOriented (const pcl::ScanMesh& mesh);
 }

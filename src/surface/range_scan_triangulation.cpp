@@ -46,7 +46,8 @@ namespace pcl
       return vertex_of;
     }
 
-    /** Two triangles per complete grid cell, split along the shorter diagonal; one for three corners. */
+    /** Two triangles per complete grid cell, split along the shorter diagonal; one for three corners.
+      * Every triangle turns the same way around its cell, so that the mesh is consistently oriented. */
     std::vector<Triangle>
     triangulateGrid (const pcl::PointCloud<pcl::PointXYZ>& cloud, const std::vector<pcl::index_t>& vertex_of)
     {
@@ -131,9 +132,17 @@ namespace pcl
       auto ids = vtkSmartPointer<vtkIdList>::New ();
       vtkCellArray* polys = output->GetPolys ();
       for (polys->InitTraversal (); polys->GetNextCell (ids);)
-        if (ids->GetNumberOfIds () == 3)
-          triangles.push_back ({static_cast<pcl::index_t> (ids->GetId (0)), static_cast<pcl::index_t> (ids->GetId (1)),
-                                static_cast<pcl::index_t> (ids->GetId (2))});
+      {
+        if (ids->GetNumberOfIds () != 3)
+          continue;
+        Triangle t = {static_cast<pcl::index_t> (ids->GetId (0)), static_cast<pcl::index_t> (ids->GetId (1)),
+                      static_cast<pcl::index_t> (ids->GetId (2))};
+        // Counter-clockwise on the retinal plane: storeOriented needs one turn for every triangle.
+        const Eigen::Vector2d e1 = uv[t[1]] - uv[t[0]], e2 = uv[t[2]] - uv[t[0]];
+        if (e1.x () * e2.y () - e1.y () * e2.x () < 0.0)
+          std::swap (t[1], t[2]);
+        triangles.push_back (t);
+      }
       return triangles;
     }
 
@@ -174,26 +183,32 @@ namespace pcl
       return kept;
     }
 
-    /** Wind every triangle so that its face normal points toward the sensor; drop zero-area ones. */
+    /** Store the non-degenerate triangles, all flipped or none so that most of the area faces the sensor.
+      * Both triangulations wind every triangle the same way on the retinal plane, so one decision
+      * keeps the mesh consistently oriented. Turning each triangle toward the sensor on its own would
+      * reverse those that face away (grazing or noisy surface): their edges would no longer pair up,
+      * and the reduction, which reads such edges as borders, could not collapse them. */
     void
     storeOriented (const std::vector<Triangle>& triangles, ScanMesh& mesh)
     {
+      const auto vertex = [&] (pcl::index_t i) { return (*mesh.cloud)[i].getVector3fMap ().cast<double> ().eval (); };
+      double facing = 0.0;
       mesh.polygons.clear ();
       mesh.polygons.reserve (triangles.size ());
-      for (auto t : triangles)
+      for (const auto& t : triangles)
       {
-        const Eigen::Vector3d a = (*mesh.cloud)[t[0]].getVector3fMap ().cast<double> ();
-        const Eigen::Vector3d b = (*mesh.cloud)[t[1]].getVector3fMap ().cast<double> ();
-        const Eigen::Vector3d c = (*mesh.cloud)[t[2]].getVector3fMap ().cast<double> ();
+        const Eigen::Vector3d a = vertex (t[0]), b = vertex (t[1]), c = vertex (t[2]);
         const Eigen::Vector3d n = (b - a).cross (c - a);
         if (n.squaredNorm () == 0.0)
           continue;
-        if (n.dot (mesh.viewpoint.towardSensor ((a + b + c) / 3.0)) < 0.0)
-          std::swap (t[1], t[2]);
+        facing += n.dot (mesh.viewpoint.towardSensor ((a + b + c) / 3.0));
         pcl::Vertices v;
         v.vertices = {t[0], t[1], t[2]};
         mesh.polygons.push_back (std::move (v));
       }
+      if (facing < 0.0)
+        for (auto& poly : mesh.polygons)
+          std::swap (poly.vertices[1], poly.vertices[2]);
     }
   }
 

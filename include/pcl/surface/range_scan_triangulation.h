@@ -19,8 +19,10 @@ namespace pcl
     * rule would remove every triangle of a regular grid, whose diagonals are sqrt(2) times longer.
     * A triangle whose longest edge is under a floor of 2 median lengths is always kept: where the
     * lengths barely vary (a tilted plane, a synthetic render) the standard deviation is rounding
-    * noise, and mean + 0.6 stddev alone would cut a quarter of a smooth surface away. Vertices that no longer belong to any triangle are kept, so
-    * that the mesh has one vertex per finite input point.
+    * noise, and mean + 0.6 stddev alone would cut a quarter of a smooth surface away. Vertices that
+    * no longer belong to any triangle are kept, so that the mesh has one vertex per finite input point.
+    * The faces are consistently oriented, most of the area facing the sensor; a triangle folded over
+    * by noise faces away rather than breaking the orientation of its neighbours.
     * \ingroup surface
     */
   class RangeScanTriangulation
