@@ -2,11 +2,10 @@
  * pcl_tensor: automatic pairwise registration of range images with tensors.
  */
 #include <pcl/io/range_scan_io.h>
-#include <pcl/io/ascii_range_ply.h>
+#include <pcl/io/range_ply.h>
 #include "file_input.h"
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/io/pcd_io.h>
-#include <pcl/io/ply_io.h>
 #include <pcl/common/io.h>
 #include <pcl/conversions.h>
 #include <pcl/common/point_tests.h>
@@ -143,73 +142,11 @@ namespace pcl
         }
         PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no PCD header (up to a DATA line)");
       }
-    }
 
-    namespace
-    {
-      /** PCL 1.13's PLYReader asserts (aborts the process) on a list property in the vertex element
-        * and on more vertices than the obj_info grid has cells, so the header is checked here first:
-        * the "ply" magic, an end_header line, scalar vertex properties, a grid that holds the vertices. */
+      /** What PCL's PCDReader.read (path, cloud) does, with the checks it lacks: PCL converts a file of
+        * no points by binding a reference to element 0 of an empty vector, and trusts that the data holds width x height points with x, y and z. */
       void
-      requirePlyHeader (const std::string& path)
-      {
-        std::ifstream in (path, std::ios::binary);
-        std::string line, element;
-        if (!std::getline (in, line) || line.rfind ("ply", 0) != 0 || line.find_first_not_of ("\r", 3) != std::string::npos)
-          PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' does not start with the PLY magic line");
-        unsigned long long vertices = 0, cols = 0, rows = 0;
-        std::set<std::string> coordinates;  // x, y and z among the vertex element's properties
-        bool format = false;
-        for (int line_no = 2; line_no <= 1000 && std::getline (in, line); ++line_no)
-        {
-          std::istringstream words (line);
-          std::string key, type;
-          words >> key >> type;
-          if (key == "format")
-          {
-            std::string version;
-            words >> version;
-            // PCL asserts on formats it half-recognizes (found by fuzz_range_scan).
-            format = (type == "ascii" || type == "binary_little_endian" || type == "binary_big_endian") && version == "1.0";
-            if (!format)
-              PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": unknown PLY format '" << line << "'");
-          }
-          if (key == "end_header")
-          {
-            if (!format)
-              PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no format line");
-            if (coordinates.size () != 3)
-              PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no x, y and z vertex properties");
-            if (cols > 0 && rows > 0 && cols * rows < vertices)
-              PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has " << vertices << " vertices in a grid of "
-                                << cols << " x " << rows << " cells");
-            return;
-          }
-          if (key == "element")
-          {
-            element = type;
-            if (type == "vertex" && !(words >> vertices))
-              PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": a vertex element without a count");
-          }
-          else if (key == "obj_info" && (type == "num_cols" || type == "num_rows"))
-            words >> (type == "num_cols" ? cols : rows);
-          else if (key == "property" && type == "list" && element == "vertex")
-            PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": a list property in the vertex element");
-          else if (key == "property" && element == "vertex")
-          {
-            std::string name;
-            if (words >> name && (name == "x" || name == "y" || name == "z"))
-              coordinates.insert (name);
-          }
-        }
-        PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no end_header line");
-      }
-
-      /** What PCL's reader.read (path, cloud) does, with the checks it lacks: PCL converts a file of no
-        * points (or of a grid but no vertex data) by binding a reference to element 0 of an empty
-        * vector, and trusts that the data holds width x height points with x, y and z. */
-      void
-      readPoints (pcl::FileReader& reader, const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud)
+      readPoints (pcl::PCDReader& reader, const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud)
       {
         pcl::PCLPointCloud2 blob;
         int version = 0;
@@ -262,13 +199,8 @@ namespace pcl
       const std::string ext = extensionOf (path);
       if (ext == "ply")
       {
-        // The fast path reads the ASCII scans (Stanford's) several times faster than pcl::PLYReader.
-        if (!readAsciiRangePLY (path, *scan.cloud))
-        {
-          requirePlyHeader (path);
-          pcl::PLYReader reader;
-          readPoints (reader, path, *scan.cloud);
-        }
+        // Not pcl::PLYReader: it is slower on ASCII and aborts on odd headers (see readRangePLY).
+        readRangePLY (path, *scan.cloud);
       }
       else if (ext == "pcd")
       {
