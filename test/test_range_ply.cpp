@@ -156,6 +156,27 @@ TEST (RangePLY, ReadsBinaryRangeGrid)
   EXPECT_EQ (cloud[3].x, 1.0f) << "a cell listing two vertices keeps the first";
 }
 
+TEST (RangePLY, ValuesBeyondFloatBecomeInfinite)
+{
+  const std::string xyz = "property double x\nproperty float y\nproperty float z\n";
+  Packed big (false);
+  big << 1e300 << 1.0f << 2.0f << -1e300 << 3.0f << 4.0f << 5.0 << 6.0f << 7.0f;
+  const std::pair<const char*, std::string> cases[] = {
+    {"ascii_beyond_float.ply", "ply\nformat ascii 1.0\nelement vertex 3\n" + xyz + "end_header\n1e300 1 2\n-1e300 3 4\n5 6 7\n"},
+    {"binary_beyond_float.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 3\n" + xyz + "end_header\n" + big.str ()},
+  };
+  for (const auto& [name, text] : cases)
+  {
+    pcl::PointCloud<pcl::PointXYZ> cloud;
+    pcl::io::readRangePLY (writeFile (name, text), cloud);
+    ASSERT_EQ (cloud.size (), 3u) << name;
+    EXPECT_EQ (cloud[0].x, std::numeric_limits<float>::infinity ()) << name;
+    EXPECT_EQ (cloud[1].x, -std::numeric_limits<float>::infinity ()) << name;
+    EXPECT_EQ (cloud[2].x, 5.0f) << name;
+    EXPECT_FALSE (cloud.is_dense) << name;
+  }
+}
+
 /** Each of these made PCL 1.13's PLYReader assert (abort the process); found by fuzz_range_scan. */
 TEST (RangePLY, ReadsHeadersOnWhichPCLAborts)
 {

@@ -181,6 +181,17 @@ namespace pcl
         PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no end_header line");
       }
 
+      /** A double as float, out-of-range values as infinities: a plain cast of a value beyond
+        * FLT_MAX is undefined behaviour (UBSan's float-cast-overflow). */
+      float
+      toFloat (double value)
+      {
+        constexpr double largest = std::numeric_limits<float>::max ();
+        if (value > largest || value < -largest)
+          return value > 0 ? std::numeric_limits<float>::infinity () : -std::numeric_limits<float>::infinity ();
+        return static_cast<float> (value);
+      }
+
       /** std::isspace without its locale look-up, for the tight token loop. */
       inline bool
       isSpace (char c)
@@ -188,11 +199,36 @@ namespace pcl
         return c == ' ' || c == '\n' || c == '\r' || c == '\t' || c == '\v' || c == '\f';
       }
 
-      /** The body of an ASCII PLY file: whitespace-separated tokens, read in order. */
-      class AsciiBody
+      /** Where the reading of a body is, and how it fails. */
+      class BodyCursor
       {
         public:
-          AsciiBody (const char* begin, const char* end, const std::string& path) : p_ (begin), end_ (end), path_ (path) {}
+          BodyCursor (const char* begin, const char* end, const std::string& path, const char* format)
+            : p_ (begin), end_ (end), path_ (path), format_ (format) {}
+
+          std::size_t
+          remaining () const { return static_cast<std::size_t> (end_ - p_); }
+
+          [[noreturn]] void
+          fail (const std::string& what) const
+          {
+            PCL_TENSOR_THROW (pcl::IOException, "'" << path_ << "' is not a valid " << format_ << " PLY file: " << what);
+          }
+
+        protected:
+          const char* p_;
+          const char* end_;
+
+        private:
+          const std::string& path_;
+          const char* format_;
+      };
+
+      /** The body of an ASCII PLY file: whitespace-separated tokens, read in order. */
+      class AsciiBody : public BodyCursor
+      {
+        public:
+          AsciiBody (const char* begin, const char* end, const std::string& path) : BodyCursor (begin, end, path, "ASCII") {}
 
           float
           readFloat (PlyType)
@@ -227,15 +263,6 @@ namespace pcl
           static std::size_t
           minimumBytes (const PlyElement& e) { return e.properties.size (); }
 
-          std::size_t
-          remaining () const { return static_cast<std::size_t> (end_ - p_); }
-
-          [[noreturn]] void
-          fail (const std::string& what) const
-          {
-            PCL_TENSOR_THROW (pcl::IOException, "'" << path_ << "' is not a valid ASCII PLY file: " << what);
-          }
-
         private:
           std::pair<const char*, const char*>
           next ()
@@ -254,23 +281,19 @@ namespace pcl
           static float
           parseOutOfRange (const char* first, const char* last)
           {
-            return static_cast<float> (std::strtod (std::string (first, last).c_str (), nullptr));
+            return toFloat (std::strtod (std::string (first, last).c_str (), nullptr));
           }
-
-          const char* p_;
-          const char* end_;
-          const std::string& path_;
       };
 
       /** The body of a binary PLY file: packed values of the header's types, in either byte order. */
-      class BinaryBody
+      class BinaryBody : public BodyCursor
       {
         public:
           BinaryBody (const char* begin, const char* end, bool swap_bytes, const std::string& path)
-            : p_ (begin), end_ (end), swap_ (swap_bytes), path_ (path) {}
+            : BodyCursor (begin, end, path, "binary"), swap_ (swap_bytes) {}
 
           float
-          readFloat (PlyType type) { return static_cast<float> (read (type)); }
+          readFloat (PlyType type) { return toFloat (read (type)); }
 
           long long
           readInteger (PlyType type)
@@ -291,15 +314,6 @@ namespace pcl
             for (const auto& p : e.properties)
               bytes += sizeOf (p.is_list ? p.count_type : p.type);
             return bytes;
-          }
-
-          std::size_t
-          remaining () const { return static_cast<std::size_t> (end_ - p_); }
-
-          [[noreturn]] void
-          fail (const std::string& what) const
-          {
-            PCL_TENSOR_THROW (pcl::IOException, "'" << path_ << "' is not a valid binary PLY file: " << what);
           }
 
         private:
@@ -344,10 +358,7 @@ namespace pcl
             return 0.0;
           }
 
-          const char* p_;
-          const char* end_;
           bool swap_;
-          const std::string& path_;
       };
 
       template <typename Body> long long
