@@ -10,6 +10,7 @@
 #include <pcl/kdtree/impl/kdtree_flann.hpp>  // KdTreeFLANN over a point type of this project
 #include <pcl/type_traits.h>
 
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -153,6 +154,11 @@ TEST (TensorDescriptor, KdTreeFlannWorksWithTheDenseRepresentation)
   tree15.setInputCloud (big);
   ASSERT_EQ (tree15.nearestKSearch ((*big)[4], 1, nn, dist), 1);
   EXPECT_EQ (nn[0], 4);
+  pcl::TensorDescriptor with_nan = (*cloud)[0];
+  ASSERT_FALSE (with_nan.bin_area.empty ());
+  EXPECT_TRUE (pcl::TensorPointRepresentation ().isValid (with_nan));
+  with_nan.bin_area.back () = std::numeric_limits<float>::quiet_NaN ();
+  EXPECT_FALSE (pcl::TensorPointRepresentation ().isValid (with_nan)) << "a NaN bin makes the tensor invalid";
   EXPECT_THROW (pcl::TensorPointRepresentation (0), pcl::BadArgumentException);
   EXPECT_THROW (pcl::TensorPointRepresentation (41), pcl::BadArgumentException);
 }

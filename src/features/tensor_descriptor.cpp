@@ -6,6 +6,7 @@
 #include <pcl/common/tensor_exceptions.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <ostream>
 #include <sstream>
@@ -92,12 +93,25 @@ namespace pcl
   }
 
   void
-  TensorPointRepresentation::copyToFloatArray (const TensorDescriptor& p, float* out) const
+  TensorPointRepresentation::requireGridSize (const TensorDescriptor& p) const
   {
     if (p.grid_size != grid_size_)
       PCL_TENSOR_THROW (BadArgumentException, "[pcl::TensorPointRepresentation] tensor grid size " << p.grid_size
                         << " differs from the representation's " << grid_size_
                         << "; use TensorPointRepresentation(" << p.grid_size << ")");
+  }
+
+  bool
+  TensorPointRepresentation::isValid (const TensorDescriptor& p) const
+  {
+    requireGridSize (p);
+    return std::all_of (p.bin_area.begin (), p.bin_area.end (), [] (float a) { return std::isfinite (a); });
+  }
+
+  void
+  TensorPointRepresentation::copyToFloatArray (const TensorDescriptor& p, float* out) const
+  {
+    requireGridSize (p);
     std::fill (out, out + nr_dimensions_, 0.f);
     for (std::size_t k = 0; k < p.bin_index.size (); ++k)
       out[p.bin_index[k]] = p.bin_area[k];

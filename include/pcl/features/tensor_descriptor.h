@@ -189,7 +189,17 @@ namespace pcl
       void
       copyToFloatArray (const TensorDescriptor& p, float* out) const override;
 
+      /** \brief Whether every bin area of \a p is finite. Checked on the sparse bins: PCL 1.13's
+        * isValid copies into a raw new[] buffer that leaks when copyToFloatArray throws (found by
+        * LeakSanitizer), and KdTreeFLANN::setInputCloud calls isValid on every point first.
+        * \throw pcl::BadArgumentException when p.grid_size differs from getGridSize() */
+      bool
+      isValid (const TensorDescriptor& p) const override;
+
     private:
+      void
+      requireGridSize (const TensorDescriptor& p) const;
+
       int grid_size_{TENSOR_DEFAULT_GRID_SIZE};
   };
 
