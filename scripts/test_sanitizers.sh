@@ -5,10 +5,9 @@
 # packages, clang included). The bench is not built, and downstream_find_package is left out: a
 # downstream build without the sanitizer flags cannot link an instrumented library.
 #
-#   bash scripts/test_sanitizers.sh          # the whole suite (about 10x slower than Release)
-#   bash scripts/test_sanitizers.sh --ci     # the bad-input matrix: test_hardening and every app's
-#                                            # bad-input and parameter cases; what CI runs, to stay in
-#                                            # its time limit
+#   bash scripts/test_sanitizers.sh          # the whole suite (about 10x slower than Release); CI
+#   bash scripts/test_sanitizers.sh --ci     # the bad-input matrix only: test_hardening and every
+#                                            # app's bad-input and parameter cases, a quick local check
 set -euo pipefail
 cd "$(dirname "$0")/.."
 CC=clang CXX=clang++ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Release \
