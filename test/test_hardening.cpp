@@ -6,6 +6,7 @@
 #include "test_utils.h"
 
 #include <pcl/common/tensor_exceptions.h>
+#include <pcl/io/pcd_io.h>
 #include <pcl/io/ply_io.h>
 #include <pcl/io/range_scan_io.h>
 #include <pcl/io/stanford_conf.h>
@@ -19,6 +20,7 @@
 
 #include <sys/stat.h>
 
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <fstream>
@@ -189,6 +191,35 @@ TEST (HardeningLoadRangeScan, BrokenFilesThrowIOException)
                                   "1 1 0.9\n"
                                   "0.5 0";
   EXPECT_THROW (pcl::io::loadRangeScan (writeFile ("huge_size.pcd", huge_size)), pcl::IOException);
+}
+
+/** Found by fuzz_range_scan: PCL's PCD reader unpacks WIDTH x HEIGHT points into a buffer of the
+  * uncompressed size the data states, and writes past it when that is smaller (heap corruption). */
+TEST (HardeningLoadRangeScan, CompressedPcdMustUncompressToItsPoints)
+{
+  pcl::PointCloud<pcl::PointXYZ> cloud;
+  for (int i = 0; i < 4; ++i)
+    cloud.push_back (pcl::PointXYZ (0.1f * i, 0.2f * (i % 2), 1.0f + 0.05f * i));
+  const std::string path = ::testing::TempDir () + "compressed.pcd";
+  ASSERT_EQ (pcl::io::savePCDFileBinaryCompressed (path, cloud), 0);
+  EXPECT_EQ (pcl::io::loadRangeScan (path).cloud->size (), 4u) << "a valid compressed PCD loads";
+
+  std::string lying = readFile (path);
+  for (const char* key : {"WIDTH 4", "POINTS 4"})
+  {
+    const auto at = lying.find (key);
+    ASSERT_NE (at, std::string::npos) << key;
+    lying.insert (at + std::strlen (key), "0");  // 40 points; the data still uncompresses to 4
+  }
+  try
+  {
+    pcl::io::loadRangeScan (writeFile ("lying_compressed.pcd", lying));
+    ADD_FAILURE () << "a compressed PCD whose data holds fewer points than its header was loaded";
+  }
+  catch (const pcl::IOException& e)
+  {
+    EXPECT_NE (std::string (e.what ()).find ("uncompresses to 48 bytes"), std::string::npos) << e.what ();
+  }
 }
 
 TEST (HardeningLoadRangeScan, UnreadableFileThrowsIOException)

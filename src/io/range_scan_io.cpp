@@ -16,6 +16,7 @@
 #include <new>
 #include <stdexcept>
 #include <cctype>
+#include <cstdint>
 #include <map>
 #include <set>
 #include <sstream>
@@ -79,22 +80,54 @@ namespace pcl
         return out;
       }
 
+      using PcdNumbers = std::map<std::string, std::vector<unsigned long long>>;
+
+      /** The first number of a header line, 0 when the line is missing. */
+      long double
+      firstNumber (PcdNumbers& n, const char* key)
+      {
+        return n[key].empty () ? 0.0L : static_cast<long double> (n[key][0]);
+      }
+
+      /** The bytes of one point: SIZE x COUNT over the fields, as PCL's point_step. */
+      long double
+      pointBytes (PcdNumbers& n)
+      {
+        long double bytes = 0.0L;
+        for (std::size_t i = 0; i < n["SIZE"].size (); ++i)
+          bytes += static_cast<long double> (n["SIZE"][i]) * (i < n["COUNT"].size () ? n["COUNT"][i] : 1ULL);
+        return bytes;
+      }
+
       /** PCL's PCD reader allocates points x point size from the header before reading any data, so a
         * garbage header asks for terabytes (found by fuzz_range_scan). No PCD, even compressed, holds
         * more than a thousand times its own size. */
       void
-      requirePlausibleSize (std::map<std::string, std::vector<unsigned long long>>& n, const std::string& path)
+      requirePlausibleSize (PcdNumbers& n, const std::string& path)
       {
         const long double file_bytes = static_cast<long double> (std::ifstream (path, std::ios::binary | std::ios::ate).tellg ());
-        long double point_bytes = 0.0L;
-        for (std::size_t i = 0; i < n["SIZE"].size (); ++i)
-          point_bytes += static_cast<long double> (n["SIZE"][i]) * (i < n["COUNT"].size () ? n["COUNT"][i] : 1ULL);
-        const auto first = [&] (const char* key) { return n[key].empty () ? 0.0L : static_cast<long double> (n[key][0]); };
-        const long double points = std::max (first ("POINTS"), first ("WIDTH") * first ("HEIGHT"));
+        const long double point_bytes = pointBytes (n);
+        const long double points = std::max (firstNumber (n, "POINTS"), firstNumber (n, "WIDTH") * firstNumber (n, "HEIGHT"));
         const long double limit = std::max (64.0L * (1 << 20), 1024.0L * file_bytes);
         if (points * point_bytes > limit)
           PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' claims " << points << " points of " << point_bytes
                             << " bytes, far more than its " << file_bytes << " bytes can hold");
+      }
+
+      /** binary_compressed data starts with its compressed and uncompressed sizes. PCL's reader shrinks
+        * its buffer to the uncompressed size it reads there, then unpacks WIDTH x HEIGHT points into it
+        * all the same: a smaller size makes it write past the buffer (heap corruption, found by
+        * fuzz_range_scan). \a in is at the start of the data. */
+      void
+      requireMatchingUncompressedSize (std::istream& in, PcdNumbers& n, const std::string& path)
+      {
+        std::uint32_t sizes[2] = {0, 0};  // compressed, uncompressed; in the machine's byte order, as PCL reads them
+        if (!in.read (reinterpret_cast<char*> (sizes), sizeof (sizes)))
+          PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has binary_compressed data without its sizes");
+        const long double expected = firstNumber (n, "WIDTH") * firstNumber (n, "HEIGHT") * pointBytes (n);
+        if (static_cast<long double> (sizes[1]) != expected)
+          PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' says its data uncompresses to " << sizes[1]
+                            << " bytes; WIDTH x HEIGHT points take " << expected);
       }
 
       /** PCL 1.13's PCDReader segfaults on a file without a complete header (an empty file, text,
@@ -109,7 +142,7 @@ namespace pcl
         static const std::set<std::string> mandatory = {"FIELDS", "SIZE", "TYPE", "WIDTH", "HEIGHT", "POINTS"};
         std::ifstream in (path, std::ios::binary);
         std::set<std::string> seen;
-        std::map<std::string, std::vector<unsigned long long>> numbers;
+        PcdNumbers numbers;
         std::size_t fields = 0;
         std::string line;
         for (int line_no = 1; line_no <= 64 && std::getline (in, line); ++line_no)
@@ -137,6 +170,8 @@ namespace pcl
               if (!seen.count (k))
                 PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no " << k << " line in its PCD header");
             requirePlausibleSize (numbers, path);
+            if (values[0].rfind ("binary_compressed", 0) == 0)  // PCL too goes by the prefix
+              requireMatchingUncompressedSize (in, numbers, path);
             return;
           }
         }
