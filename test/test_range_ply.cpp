@@ -17,31 +17,6 @@
 
 namespace
 {
-  std::string
-  writeFile (const std::string& name, const std::string& text)
-  {
-    const std::string path = ::testing::TempDir () + name;
-    std::ofstream (path, std::ios::binary) << text;
-    return path;
-  }
-
-  /** Same size, same NaN pattern, same floats bit for bit. */
-  void
-  expectIdentical (const pcl::PointCloud<pcl::PointXYZ>& expected, const pcl::PointCloud<pcl::PointXYZ>& actual)
-  {
-    ASSERT_EQ (expected.width, actual.width);
-    ASSERT_EQ (expected.height, actual.height);
-    ASSERT_EQ (expected.size (), actual.size ());
-    std::size_t differing = 0;
-    for (std::size_t i = 0; i < expected.size (); ++i)
-    {
-      const bool fe = pcl::isXYZFinite (expected[i]), fa = pcl::isXYZFinite (actual[i]);
-      if (fe != fa || (fe && std::memcmp (expected[i].data, actual[i].data, 3 * sizeof (float)) != 0))
-        ++differing;
-    }
-    EXPECT_EQ (differing, 0u);
-  }
-
   const std::string kGridHeader = "ply\nformat ascii 1.0\nobj_info num_cols 2\nobj_info num_rows 2\n"
                                   "element vertex 3\nproperty float x\nproperty float confidence\nproperty float y\n"
                                   "property float z\nelement range_grid 4\nproperty list uchar int vertex_indices\nend_header\n";
@@ -107,7 +82,7 @@ TEST (RangePLY, ReadsWhatPCLWritesLikePCLReader)
         pcl::PointCloud<pcl::PointXYZ> ours, reference;
         pcl::io::readRangePLY (path, ours);
         ASSERT_GE (pcl::PLYReader ().read (path, reference), 0);
-        expectIdentical (reference, ours);
+        pcl_tensor_test::expectIdenticalPoints (reference, ours);
         EXPECT_EQ (ours.height, cloud->height) << "the grid survives the round trip";
         EXPECT_EQ (ours.is_dense, cloud->is_dense);
       }
@@ -124,7 +99,7 @@ TEST (RangePLY, ReadsBigEndianMixedTypesAndSkipsLists)
   body << 0.25 << std::uint16_t (2) << 7.0f << 8.0f << std::int16_t (-300) << std::uint8_t (200);
   body << -1e3 << std::uint16_t (0) << std::int16_t (5) << std::uint8_t (0);
   pcl::PointCloud<pcl::PointXYZ> cloud;
-  pcl::io::readRangePLY (writeFile ("big_endian.ply", header + body.str ()), cloud);
+  pcl::io::readRangePLY (pcl_tensor_test::writeTempFile ("big_endian.ply", header + body.str ()), cloud);
   ASSERT_EQ (cloud.size (), 2u);
   EXPECT_EQ (cloud.height, 1u);
   EXPECT_EQ (cloud[0].x, 0.25f);
@@ -146,7 +121,7 @@ TEST (RangePLY, ReadsBinaryRangeGrid)
   body << std::uint8_t (1) << std::int32_t (2) << std::uint8_t (0) << std::uint8_t (1) << std::int32_t (0)
        << std::uint8_t (2) << std::int32_t (1) << std::int32_t (0);
   pcl::PointCloud<pcl::PointXYZ> cloud;
-  pcl::io::readRangePLY (writeFile ("binary_grid.ply", header + body.str ()), cloud);
+  pcl::io::readRangePLY (pcl_tensor_test::writeTempFile ("binary_grid.ply", header + body.str ()), cloud);
   ASSERT_EQ (cloud.width, 2u);
   ASSERT_EQ (cloud.height, 2u);
   EXPECT_FALSE (cloud.is_dense);
@@ -168,7 +143,7 @@ TEST (RangePLY, ValuesBeyondFloatBecomeInfinite)
   for (const auto& [name, text] : cases)
   {
     pcl::PointCloud<pcl::PointXYZ> cloud;
-    pcl::io::readRangePLY (writeFile (name, text), cloud);
+    pcl::io::readRangePLY (pcl_tensor_test::writeTempFile (name, text), cloud);
     ASSERT_EQ (cloud.size (), 3u) << name;
     EXPECT_EQ (cloud[0].x, std::numeric_limits<float>::infinity ()) << name;
     EXPECT_EQ (cloud[1].x, -std::numeric_limits<float>::infinity ()) << name;
@@ -193,7 +168,7 @@ TEST (RangePLY, ReadsHeadersOnWhichPCLAborts)
   for (const auto& [name, header] : cases)
   {
     pcl::PointCloud<pcl::PointXYZ> cloud;
-    pcl::io::readRangePLY (writeFile (name, header + three.str ()), cloud);
+    pcl::io::readRangePLY (pcl_tensor_test::writeTempFile (name, header + three.str ()), cloud);
     ASSERT_EQ (cloud.size (), 3u) << name;
     EXPECT_EQ (cloud.height, 1u) << name;
     EXPECT_EQ (cloud[2].y, 4.0f) << name;
@@ -202,7 +177,7 @@ TEST (RangePLY, ReadsHeadersOnWhichPCLAborts)
 
 TEST (RangePLY, ReadsGridSkippingOtherProperties)
 {
-  const std::string path = writeFile ("grid.ply", kGridHeader + "1 0.5 2 3\n4 0.5 5 6\n-7.25 0 8e-3 9\n1 0\n0\n1 2\n1 1\n");
+  const std::string path = pcl_tensor_test::writeTempFile ("grid.ply", kGridHeader + "1 0.5 2 3\n4 0.5 5 6\n-7.25 0 8e-3 9\n1 0\n0\n1 2\n1 1\n");
   pcl::PointCloud<pcl::PointXYZ> cloud;
   pcl::io::readRangePLY (path, cloud);
   ASSERT_EQ (cloud.width, 2u);
@@ -218,7 +193,7 @@ TEST (RangePLY, ReadsGridSkippingOtherProperties)
 
 TEST (RangePLY, ReadsMeshVerticesAsUnorganizedCloud)
 {
-  const std::string path = writeFile ("mesh.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+  const std::string path = pcl_tensor_test::writeTempFile ("mesh.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
                                       "property float y\nproperty float z\nelement face 1\n"
                                       "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   pcl::PointCloud<pcl::PointXYZ> cloud;
@@ -260,7 +235,7 @@ TEST (RangePLY, RefusesMalformedFiles)
                                "property list uchar float vertex_indices\nend_header\n" + std::string (12, '\0') + "\x01" + std::string (4, '\0')},
   };
   for (const auto& [name, text] : cases)
-    EXPECT_THROW (pcl::io::readRangePLY (writeFile (name, text), cloud), pcl::IOException) << name;
+    EXPECT_THROW (pcl::io::readRangePLY (pcl_tensor_test::writeTempFile (name, text), cloud), pcl::IOException) << name;
 }
 
 TEST (RangePLY, MatchesPCLReaderOnStanfordScans)
@@ -276,6 +251,6 @@ TEST (RangePLY, MatchesPCLReaderOnStanfordScans)
     pcl::PointCloud<pcl::PointXYZ> fast, reference;
     pcl::io::readRangePLY (file, fast);
     ASSERT_GE (pcl::PLYReader ().read (file, reference), 0);
-    expectIdentical (reference, fast);
+    pcl_tensor_test::expectIdenticalPoints (reference, fast);
   }
 }

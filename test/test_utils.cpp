@@ -1,6 +1,9 @@
 #include "test_utils.h"
 
+#include <pcl/common/point_tests.h>
+
 #include <algorithm>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <random>
@@ -154,5 +157,29 @@ namespace pcl_tensor_test
         if (!directed.emplace (poly.vertices[e], poly.vertices[(e + 1) % poly.vertices.size ()]).second)
           return false;
     return true;
+  }
+
+  std::string
+  writeTempFile (const std::string& name, const std::string& bytes)
+  {
+    const std::string path = ::testing::TempDir () + name;
+    std::ofstream (path, std::ios::binary) << bytes;
+    return path;
+  }
+
+  void
+  expectIdenticalPoints (const pcl::PointCloud<pcl::PointXYZ>& expected, const pcl::PointCloud<pcl::PointXYZ>& actual)
+  {
+    ASSERT_EQ (expected.width, actual.width);
+    ASSERT_EQ (expected.height, actual.height);
+    ASSERT_EQ (expected.size (), actual.size ());
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < expected.size (); ++i)
+    {
+      const bool fe = pcl::isXYZFinite (expected[i]), fa = pcl::isXYZFinite (actual[i]);
+      if (fe != fa || (fe && std::memcmp (expected[i].data, actual[i].data, 3 * sizeof (float)) != 0))
+        ++differing;
+    }
+    EXPECT_EQ (differing, 0u);
   }
 }

@@ -78,4 +78,13 @@ namespace pcl_tensor_test
   /** \brief True when no directed edge occurs twice: the faces are consistently oriented. */
   bool
   consistentlyOriented (const pcl::ScanMesh& mesh);
+
+  /** \brief Write \a bytes to \a name in GoogleTest's temporary folder; returns the path. */
+  std::string
+  writeTempFile (const std::string& name, const std::string& bytes);
+
+  /** \brief The clouds agree as a reader's output must: same grid, same NaN pattern, the finite
+    * points equal bit for bit. */
+  void
+  expectIdenticalPoints (const pcl::PointCloud<pcl::PointXYZ>& expected, const pcl::PointCloud<pcl::PointXYZ>& actual);
 }

@@ -2,7 +2,8 @@
  * pcl_tensor: automatic pairwise registration of range images with tensors.
  */
 #include <pcl/io/range_ply.h>
-#include <pcl/common/point_tests.h>
+#include "ascii_number.h"
+#include <pcl/io/range_scan_io.h>  // updateDenseFlag
 #include <pcl/common/tensor_exceptions.h>
 
 #include <algorithm>
@@ -181,17 +182,6 @@ namespace pcl
         PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no end_header line");
       }
 
-      /** A double as float, out-of-range values as infinities: a plain cast of a value beyond
-        * FLT_MAX is undefined behaviour (UBSan's float-cast-overflow). */
-      float
-      toFloat (double value)
-      {
-        constexpr double largest = std::numeric_limits<float>::max ();
-        if (value > largest || value < -largest)
-          return value > 0 ? std::numeric_limits<float>::infinity () : -std::numeric_limits<float>::infinity ();
-        return static_cast<float> (value);
-      }
-
       /** std::isspace without its locale look-up, for the tight token loop. */
       inline bool
       isSpace (char c)
@@ -235,12 +225,7 @@ namespace pcl
           {
             const auto [first, last] = next ();
             float value = 0.0f;
-            // from_chars does not accept a leading '+', which some writers emit.
-            const char* start = (first != last && *first == '+') ? first + 1 : first;
-            const auto result = std::from_chars (start, last, value);
-            if (result.ec == std::errc::result_out_of_range)
-              return parseOutOfRange (start, last);
-            if (result.ec != std::errc () || result.ptr != last)
+            if (!detail::parseFloat (first, last, value))
               fail ("bad number '" + std::string (first, last) + "'");
             return value;
           }
@@ -276,13 +261,6 @@ namespace pcl
               ++p_;
             return {first, p_};
           }
-
-          /** Denormals and overflow: keep what a strtod-based reader (pcl::PLYReader) would give. */
-          static float
-          parseOutOfRange (const char* first, const char* last)
-          {
-            return toFloat (std::strtod (std::string (first, last).c_str (), nullptr));
-          }
       };
 
       /** The body of a binary PLY file: packed values of the header's types, in either byte order. */
@@ -293,7 +271,7 @@ namespace pcl
             : BodyCursor (begin, end, path, "binary"), swap_ (swap_bytes) {}
 
           float
-          readFloat (PlyType type) { return toFloat (read (type)); }
+          readFloat (PlyType type) { return detail::toFloat (read (type)); }
 
           long long
           readInteger (PlyType type)
@@ -529,14 +507,6 @@ namespace pcl
         }
       }
 
-      bool
-      allFinite (const pcl::PointCloud<pcl::PointXYZ>& cloud)
-      {
-        for (const auto& p : cloud)
-          if (!pcl::isXYZFinite (p))
-            return false;
-        return true;
-      }
 
       bool
       isLittleEndianMachine ()
@@ -573,7 +543,7 @@ namespace pcl
       }
       pcl::PointCloud<pcl::PointXYZ> out;
       organize (content, header, out);
-      out.is_dense = allFinite (out);
+      updateDenseFlag (out);
       cloud.swap (out);
     }
   }

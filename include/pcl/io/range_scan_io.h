@@ -28,6 +28,8 @@ namespace pcl
     };
 
     /** \brief Read a range scan from a PLY (ASCII or binary, with or without range_grid) or PCD file.
+      * It reads through readRangePLY() and readRangePCD(), not PCL's readers, which abort or write past
+      * their buffers on malformed files.
       * \param[in] path the file to read
       * \return the scan
       * \throw pcl::IOException when the file is missing, unreadable, of an unknown format or malformed
