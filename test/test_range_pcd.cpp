@@ -97,6 +97,7 @@ TEST (RangePCD, RefusesMalformedFiles)
     {"no_z.pcd", "FIELDS x y\nSIZE 4 4\nTYPE F F\n" + three + "DATA ascii\n0 0\n1 0\n0 1\n"},
     {"grid_not_points.pcd", head + "WIDTH 2\nHEIGHT 2\nPOINTS 3\nDATA ascii\n0 0 1\n1 0 1\n0 1 1\n"},
     {"no_width.pcd", head + "HEIGHT 1\nPOINTS 3\nDATA ascii\n0 0 1\n1 0 1\n0 1 1\n"},
+    {"no_size.pcd", "FIELDS x y z\nTYPE F F F\n" + three + "DATA ascii\n0 0 1\n1 0 1\n0 1 1\n"},
     {"short_line.pcd", head + three + "DATA ascii\n0 0 1\n1 0\n0 1 1\n"},
     {"bad_number.pcd", head + three + "DATA ascii\n0 0 1\n1 0 x\n0 1 1\n"},
     {"ascii_cut.pcd", head + three + "DATA ascii\n0 0 1\n1 0 1\n"},

@@ -123,10 +123,10 @@ namespace pcl
 
       /** What the entries must say together: known types, x, y and z, and WIDTH x HEIGHT = POINTS. */
       void
-      requireConsistent (PcdHeader& h, int last_entry, const std::string& path)
+      requireConsistent (PcdHeader& h, const std::vector<bool>& seen, const std::string& path)
       {
         for (const char* needed : {"FIELDS", "SIZE", "TYPE", "WIDTH", "HEIGHT", "POINTS"})
-          if (std::find (kEntries.begin (), kEntries.end (), needed) - kEntries.begin () > last_entry)
+          if (!seen[std::find (kEntries.begin (), kEntries.end (), needed) - kEntries.begin ()])
             PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' has no " << needed << " line in its PCD header");
         for (auto& f : h.fields)
         {
@@ -150,6 +150,7 @@ namespace pcl
       {
         PcdHeader h;
         int last_entry = -1;
+        std::vector<bool> seen (kEntries.size (), false);
         std::string line;
         for (int line_no = 1; std::getline (in, line); ++line_no)
         {
@@ -166,6 +167,7 @@ namespace pcl
           if (rank <= last_entry)
             headerError (path, line_no, key + " is repeated or out of order");
           last_entry = rank;
+          seen[rank] = true;
           std::vector<std::string> values;
           for (std::string v; words >> v;)
             values.push_back (v);
@@ -174,7 +176,7 @@ namespace pcl
           parseEntry (key, values, h, path, line_no);
           if (key == "DATA")
           {
-            requireConsistent (h, last_entry, path);
+            requireConsistent (h, seen, path);
             return h;
           }
         }
@@ -196,10 +198,18 @@ namespace pcl
         }
       }
 
+      /** The first field named \a name; requireConsistent() made sure x, y and z are there. */
+      std::size_t
+      fieldIndex (const PcdHeader& h, const char* name)
+      {
+        return static_cast<std::size_t> (std::find_if (h.fields.begin (), h.fields.end (),
+                                                       [&] (const PcdField& f) { return f.name == name; }) - h.fields.begin ());
+      }
+
       const PcdField&
       field (const PcdHeader& h, const char* name)
       {
-        return *std::find_if (h.fields.begin (), h.fields.end (), [&] (const PcdField& f) { return f.name == name; });
+        return h.fields[fieldIndex (h, name)];
       }
 
       [[noreturn]] void
@@ -256,12 +266,12 @@ namespace pcl
         if (expected > 0 && pcl::lzfDecompress (data.data () + sizeof (sizes), sizes[0], raw.data (), sizes[1]) != expected)
           dataError (path, "binary_compressed data that do not uncompress to their stated size");
         cloud.resize (h.points);
-        const auto axis = [&] (const char* name, std::size_t i) {
-          const auto k = static_cast<std::size_t> (&field (h, name) - h.fields.data ());
+        const std::size_t kx = fieldIndex (h, "x"), ky = fieldIndex (h, "y"), kz = fieldIndex (h, "z");
+        const auto value = [&] (std::size_t k, std::size_t i) {
           return detail::toFloat (valueAt (raw.data () + block[k] + i * h.fields[k].size, h.fields[k]));
         };
         for (std::size_t i = 0; i < cloud.size (); ++i)
-          cloud[i] = pcl::PointXYZ (axis ("x", i), axis ("y", i), axis ("z", i));
+          cloud[i] = pcl::PointXYZ (value (kx, i), value (ky, i), value (kz, i));
       }
 
       /** DATA ascii: a line per point, as many values as the fields' counts add up to. */
@@ -273,12 +283,11 @@ namespace pcl
           per_point += f.count;
         if (h.points > data.size () / (2 * per_point))  // a value and a separator at the least
           dataError (path, std::to_string (h.points) + " points cannot fit in " + std::to_string (data.size ()) + " bytes");
-        std::size_t column[3];
+        std::size_t column[3] = {0, 0, 0};  // of x, y and z among a line's values
         const char* axes[3] = {"x", "y", "z"};
         for (int a = 0; a < 3; ++a)
-          for (std::size_t k = 0, c = 0; k < h.fields.size (); c += h.fields[k].count, ++k)
-            if (h.fields[k].name == axes[a])
-              column[a] = c;
+          for (std::size_t k = 0; k < fieldIndex (h, axes[a]); ++k)
+            column[a] += h.fields[k].count;
         cloud.resize (h.points);
         std::istringstream lines (data);
         std::string line;
