@@ -6,13 +6,12 @@
 
 #include <pcl/common/point_tests.h>
 #include <pcl/common/tensor_exceptions.h>
-#include <pcl/io/range_ply.h>
 #include <pcl/console/print.h>
 #include <pcl/io/ply_io.h>
+#include <pcl/io/range_ply.h>
 
 #include <algorithm>
 #include <cstring>
-#include <fstream>
 #include <limits>
 
 namespace

@@ -8,6 +8,7 @@
 #include <pcl/io/lzf.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
