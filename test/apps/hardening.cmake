@@ -37,7 +37,7 @@ endfunction()
 # pcl_tensor_case(NAME EXIT COMMAND ...): one more case of the matrix, run once the files exist.
 function(pcl_tensor_case name expected_exit)
   pcl_tensor_app_test(${name} ${expected_exit} ${ARGN})
-  set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED "bad_inputs;register_views" TIMEOUT 600)
+  set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED "bad_inputs;register_views" TIMEOUT 1500)
 endfunction()
 
 set(REGISTER $<TARGET_FILE:pcl_tensor_register>)
