@@ -29,6 +29,13 @@ namespace pcl
           PCL_TENSOR_THROW (pcl::IOException, "cannot open '" << path << "'");
       }
 
+      /** \brief Throw pcl::IOException naming the file and line a header reader stopped at. */
+      [[noreturn]] inline void
+      throwAtLine (const std::string& path, int line_no, const std::string& what)
+      {
+        PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": " << what);
+      }
+
       /** \brief While alive, PCL's console prints nothing: PCL's readers report a bad file in
         * several lines of their own before returning an error, which our one exception replaces.
         */

@@ -3,6 +3,7 @@
  */
 #include <pcl/io/range_pcd.h>
 #include "ascii_number.h"
+#include "file_input.h"
 #include <pcl/io/range_scan_io.h>  // updateDenseFlag
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/io/lzf.h>
@@ -43,19 +44,13 @@ namespace pcl
         std::size_t point_step = 0;
       };
 
-      [[noreturn]] void
-      headerError (const std::string& path, int line_no, const std::string& what)
-      {
-        PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": " << what);
-      }
-
       unsigned long long
       parseCount (const std::string& v, const std::string& path, int line_no)
       {
         unsigned long long n = 0;
         const auto result = std::from_chars (v.data (), v.data () + v.size (), n);
         if (result.ec != std::errc () || result.ptr != v.data () + v.size ())
-          headerError (path, line_no, "'" + v + "' is not a size or count");
+          detail::throwAtLine (path, line_no, "'" + v + "' is not a size or count");
         return n;
       }
 
@@ -76,7 +71,7 @@ namespace pcl
           return;
         }
         if ((key == "SIZE" || key == "TYPE" || key == "COUNT") && values.size () != h.fields.size ())
-          headerError (path, line_no, key + " has " + std::to_string (values.size ()) + " entries for "
+          detail::throwAtLine (path, line_no, key + " has " + std::to_string (values.size ()) + " entries for "
                        + std::to_string (h.fields.size ()) + " fields");
         for (std::size_t i = 0; key == "SIZE" && i < values.size (); ++i)
           h.fields[i].size = parseCount (values[i], path, line_no);
@@ -94,10 +89,10 @@ namespace pcl
         {
           float v[7];
           if (values.size () != 7)
-            headerError (path, line_no, "VIEWPOINT needs 7 numbers");
+            detail::throwAtLine (path, line_no, "VIEWPOINT needs 7 numbers");
           for (int k = 0; k < 7; ++k)
             if (!detail::parseFloat (values[k].data (), values[k].data () + values[k].size (), v[k]))
-              headerError (path, line_no, "'" + values[k] + "' is not a number");
+              detail::throwAtLine (path, line_no, "'" + values[k] + "' is not a number");
           h.origin = Eigen::Vector4f (v[0], v[1], v[2], 0.0f);
           h.orientation = Eigen::Quaternionf (v[3], v[4], v[5], v[6]);
         }
@@ -110,7 +105,7 @@ namespace pcl
           else if (values[0] == "binary_compressed")
             h.data = PcdData::BinaryCompressed;
           else
-            headerError (path, line_no, "unknown DATA '" + values[0] + "'");
+            detail::throwAtLine (path, line_no, "unknown DATA '" + values[0] + "'");
         }
       }
 
@@ -163,17 +158,17 @@ namespace pcl
             key = "FIELDS";
           const auto entry = std::find (kEntries.begin (), kEntries.end (), key);
           if (entry == kEntries.end ())
-            headerError (path, line_no, "'" + key + "' is not a PCD header entry");
+            detail::throwAtLine (path, line_no, "'" + key + "' is not a PCD header entry");
           const int rank = static_cast<int> (entry - kEntries.begin ());
           if (rank <= last_entry)
-            headerError (path, line_no, key + " is repeated or out of order");
+            detail::throwAtLine (path, line_no, key + " is repeated or out of order");
           last_entry = rank;
           seen[rank] = true;
           std::vector<std::string> values;
           for (std::string v; words >> v;)
             values.push_back (v);
           if (values.empty ())
-            headerError (path, line_no, key + " without a value");
+            detail::throwAtLine (path, line_no, key + " without a value");
           parseEntry (key, values, h, path, line_no);
           if (key == "DATA")
           {

@@ -3,6 +3,7 @@
  */
 #include <pcl/io/range_ply.h>
 #include "ascii_number.h"
+#include "file_input.h"
 #include <pcl/io/range_scan_io.h>  // updateDenseFlag
 #include <pcl/common/tensor_exceptions.h>
 
@@ -87,26 +88,20 @@ namespace pcl
         std::size_t num_cols = 0, num_rows = 0;  ///< obj_info: the size of the range grid
       };
 
-      [[noreturn]] void
-      headerError (const std::string& path, int line_no, const std::string& what)
-      {
-        PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": " << what);
-      }
-
       PlyFormat
       parseFormat (std::istringstream& words, const std::string& path, int line_no)
       {
         std::string format, version;
         words >> format >> version;
         if (version != "1.0")
-          headerError (path, line_no, "PLY version '" + version + "' is not 1.0");
+          detail::throwAtLine (path, line_no, "PLY version '" + version + "' is not 1.0");
         if (format == "ascii")
           return PlyFormat::Ascii;
         if (format == "binary_little_endian")
           return PlyFormat::BinaryLittleEndian;
         if (format == "binary_big_endian")
           return PlyFormat::BinaryBigEndian;
-        headerError (path, line_no, "unknown PLY format '" + format + "'");
+        detail::throwAtLine (path, line_no, "unknown PLY format '" + format + "'");
       }
 
       PlyProperty
@@ -121,12 +116,12 @@ namespace pcl
           std::string count_type;
           words >> count_type >> type;
           if (!parseType (count_type, p.count_type) || !isIntegral (p.count_type))
-            headerError (path, line_no, "a list whose length type is '" + count_type + "'");
+            detail::throwAtLine (path, line_no, "a list whose length type is '" + count_type + "'");
         }
         if (!parseType (type, p.type))
-          headerError (path, line_no, "unknown property type '" + type + "'");
+          detail::throwAtLine (path, line_no, "unknown property type '" + type + "'");
         if (!(words >> p.name))
-          headerError (path, line_no, "a property without a name");
+          detail::throwAtLine (path, line_no, "a property without a name");
         return p;
       }
 
@@ -162,13 +157,13 @@ namespace pcl
           {
             PlyElement e;
             if (!(words >> e.name >> e.count))
-              headerError (path, line_no, "an element without a name and a count");
+              detail::throwAtLine (path, line_no, "an element without a name and a count");
             header.elements.push_back (e);
           }
           else if (key == "property")
           {
             if (header.elements.empty ())
-              headerError (path, line_no, "a property before any element");
+              detail::throwAtLine (path, line_no, "a property before any element");
             header.elements.back ().properties.push_back (parseProperty (words, path, line_no));
           }
           else if (key == "end_header")
