@@ -174,6 +174,21 @@ TEST (RangePLY, ReadsHeadersOnWhichPCLAborts)
   }
 }
 
+/** An element without properties holds no data, so its count says nothing; fuzz_range_scan found a
+  * camera element counting 5e15 that the reader looped over until the fuzzer's timeout. */
+TEST (RangePLY, SkipsElementsWithoutPropertiesWhateverTheirCount)
+{
+  const std::string xyz = "element vertex 1\nproperty float x\nproperty float y\nproperty float z\n";
+  for (const char* element : {"camera", "material"})
+  {
+    const std::string header = "ply\nformat ascii 1.0\nelement " + std::string (element) + " 5000000000000000\n" + xyz + "end_header\n";
+    pcl::PointCloud<pcl::PointXYZ> cloud;
+    pcl::io::readRangePLY (pcl_tensor_test::writeTempFile ("propertyless.ply", header + "1 2 3\n"), cloud);
+    ASSERT_EQ (cloud.size (), 1u) << element;
+    EXPECT_EQ (cloud[0].z, 3.0f) << element;
+  }
+}
+
 TEST (RangePLY, ReadsGridSkippingOtherProperties)
 {
   const std::string path = pcl_tensor_test::writeTempFile ("grid.ply", kGridHeader + "1 0.5 2 3\n4 0.5 5 6\n-7.25 0 8e-3 9\n1 0\n0\n1 2\n1 1\n");

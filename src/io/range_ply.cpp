@@ -355,8 +355,6 @@ namespace pcl
       template <typename Body> void
       skipElement (Body& body, const PlyElement& e)
       {
-        if (e.properties.empty ())
-          return;  // nothing to read, however large the count
         for (std::size_t i = 0; i < e.count; ++i)
           for (const auto& p : e.properties)
             skipProperty (body, p);
@@ -456,6 +454,8 @@ namespace pcl
             readVertices (body, e, content.vertices);
             has_vertices = true;
           }
+          else if (e.properties.empty ())
+            continue;  // no data to read, however large the count: looping over it would hang
           else if (e.name == "range_grid" && has_vertices && !content.has_grid)
           {
             content.cells = readGrid (body, e, content.vertices.size ());
