@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 
 namespace
@@ -58,6 +59,8 @@ TEST (ViewPairsIO, RefusesBadLinesWithTheLineNumber)
     }
   }
   EXPECT_THROW (pcl::io::loadViewPairs ("/nonexistent/pairs.txt", kViews), pcl::IOException);
+  // A directory opens like a file on Linux and reads as no pairs at all: it must not pass as an empty list.
+  EXPECT_THROW (pcl::io::loadViewPairs (std::filesystem::temp_directory_path ().string (), kViews), pcl::IOException);
 }
 
 TEST (ViewPairsIO, AmbiguousFileNamesMustBeGivenInFull)

@@ -44,13 +44,12 @@ namespace pcl
         std::string extra;
         if (!(in >> e.file >> e.translation.x () >> e.translation.y () >> e.translation.z () >> qx >> qy >> qz >> qw)
             || (in >> extra))
-          PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no
-                            << ": a bmesh line needs FILE tx ty tz qx qy qz qw");
+          detail::throwAtLine (path, line_no, "a bmesh line needs FILE tx ty tz qx qy qz qw");
         e.quaternion = Eigen::Quaterniond (qw, qx, qy, qz);
         // An infinite or overflowing quaternion would normalize to NaN: a rotation must come out.
         const double norm = e.quaternion.norm ();
         if (!(norm > 0.0) || !std::isfinite (norm) || !e.translation.allFinite ())
-          PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": invalid pose");
+          detail::throwAtLine (path, line_no, "invalid pose");
         return e;
       }
     }
@@ -71,7 +70,7 @@ namespace pcl
         if (!(in >> keyword) || keyword[0] == '#' || keyword == "camera" || keyword == "mesh")
           continue;
         if (keyword != "bmesh")
-          PCL_TENSOR_THROW (pcl::IOException, path << ":" << line_no << ": unknown keyword '" << keyword << "'");
+          detail::throwAtLine (path, line_no, "unknown keyword '" + keyword + "'");
         entries.push_back (parseBmesh (in, path, line_no));
       }
       return entries;

@@ -2,6 +2,7 @@
  * pcl_tensor: automatic pairwise registration of range images with tensors.
  */
 #include <pcl/io/view_pairs_io.h>
+#include "file_input.h"
 #include <pcl/common/tensor_exceptions.h>
 
 #include <fstream>
@@ -54,9 +55,8 @@ namespace pcl
     std::vector<std::pair<int, int>>
     loadViewPairs (const std::string& path, const std::vector<std::string>& view_names)
     {
+      detail::requireReadableFile (path);
       std::ifstream file (path);
-      if (!file)
-        PCL_TENSOR_THROW (pcl::IOException, "cannot read the pairs file '" << path << "'");
       std::vector<std::pair<int, int>> pairs;
       std::string line;
       for (int number = 1; std::getline (file, line); ++number)
@@ -66,13 +66,12 @@ namespace pcl
         if (!(words >> a) || a[0] == '#')
           continue;
         if (!(words >> b) || (words >> extra))
-          PCL_TENSOR_THROW (pcl::IOException, path << ":" << number << ": expected two views per line, got '" << line << "'");
+          detail::throwAtLine (path, number, "expected two views per line, got '" + line + "'");
         const int i = viewIndex (a, view_names), j = viewIndex (b, view_names);
         if (i < 0 || j < 0)
-          PCL_TENSOR_THROW (pcl::IOException, path << ":" << number << ": '" << (i < 0 ? a : b)
-                            << "' is neither a view's index nor (unambiguously) its file name");
+          detail::throwAtLine (path, number, "'" + (i < 0 ? a : b) + "' is neither a view's index nor (unambiguously) its file name");
         if (i == j)
-          PCL_TENSOR_THROW (pcl::IOException, path << ":" << number << ": a view cannot be paired with itself");
+          detail::throwAtLine (path, number, "a view cannot be paired with itself");
         pairs.emplace_back (i, j);
       }
       return pairs;
