@@ -1,3 +1,4 @@
+#include <pcl/common/io.h>
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/registration/correspondence_rejection_tensor_verification.h>
 #include <pcl/registration/registration_error.h>
@@ -102,6 +103,54 @@ TEST (CorrespondenceRejectorTensorVerification, VerifyReportsTheFailingStage)
   const Eigen::Matrix4f exact = (views ()[0].pose.inverse () * views ()[1].pose).matrix ().cast<float> ();
   EXPECT_TRUE (rejector.verify (exact, result)) << toString (result.stage);
   EXPECT_GE (result.fine_correspondences, 2.0 * result.required_correspondences);
+}
+
+TEST (CorrespondenceRejectorTensorVerification, CountsTheCorrespondencesOfBothViews)
+{
+  // A view against itself at the exact pose: every point of either copy lies on the other.
+  CorrespondenceRejectorTensorVerification rejector;
+  setUp (rejector, 0, 0);
+  TensorVerificationParams p;
+  p.icp_iterations = 0;
+  TensorVerificationResult result;
+  for (const bool both : {true, false})
+  {
+    p.count_both_views = both;
+    rejector.setParams (p);
+    ASSERT_TRUE (rejector.verify (Eigen::Matrix4f::Identity (), result)) << toString (result.stage);
+    EXPECT_EQ (result.fine_correspondences, (both ? 2.0 : 1.0) * views ()[0].scan->fine.cloud->size ());
+  }
+}
+
+TEST (CorrespondenceRejectorTensorVerification, APairUnderHalfOverlapCanPassOnlyWhenBothViewsCount)
+{
+  // Counted over the scene alone, 2 n_c within d_res is half of the smaller view, which no pair under
+  // 0.5 overlap (Eq. 14, at 2 d_res) can reach; the paper's Fig. 18 has correct pairs below it.
+  int scene = -1;
+  double overlap = 0.0;
+  for (int k = 2; k <= 4 && scene < 0; ++k)
+  {
+    pcl::PointCloud<pcl::PointXYZ> a, b;
+    pcl::copyPointCloud (*views ()[0].scan->fine.cloud, a);
+    pcl::copyPointCloud (*views ()[k].scan->fine.cloud, b);
+    overlap = pcl::viewOverlap (a, views ()[0].pose, b, views ()[k].pose, 2.0 * views ()[0].scan->resolution);
+    if (overlap >= 0.3 && overlap < 0.5)
+      scene = k;
+  }
+  ASSERT_GE (scene, 0) << "no ring view 60-120 degrees from view 0 overlaps it by 0.3-0.5";
+  CorrespondenceRejectorTensorVerification rejector;
+  setUp (rejector, 0, scene);
+  const Eigen::Matrix4f exact = (views ()[0].pose.inverse () * views ()[scene].pose).matrix ().cast<float> ();
+  TensorVerificationParams p;
+  p.icp_iterations = 0;
+  TensorVerificationResult result;
+  p.count_both_views = false;
+  rejector.setParams (p);
+  EXPECT_FALSE (rejector.verify (exact, result));
+  EXPECT_EQ (result.stage, TensorVerificationStage::FINE_OVERLAP) << "overlap " << overlap << ": " << toString (result.stage);
+  p.count_both_views = true;
+  rejector.setParams (p);
+  EXPECT_TRUE (rejector.verify (exact, result)) << "overlap " << overlap << ": " << toString (result.stage);
 }
 
 TEST (CorrespondenceRejectorTensorVerification, MissingInputThrows)

@@ -68,6 +68,30 @@ namespace pcl
       prepared_ = false;
     }
 
+    namespace
+    {
+      /** An even, deterministic sample of about \a n points: every k-th point. */
+      pcl::PointCloud<pcl::PointNormal>::Ptr
+      evenSample (const pcl::PointCloud<pcl::PointNormal>& cloud, int n)
+      {
+        const std::size_t step = std::max<std::size_t> (1, cloud.size () / static_cast<std::size_t> (std::max (1, n)));
+        pcl::PointCloud<pcl::PointNormal>::Ptr sample (new pcl::PointCloud<pcl::PointNormal>);
+        for (std::size_t i = 0; i < cloud.size (); i += step)
+          sample->push_back (cloud[i]);
+        return sample;
+      }
+
+      /** The inverse of a rigid transform, exact up to rounding (no general inversion). */
+      Eigen::Matrix4f
+      inverseRigid (const Eigen::Matrix4f& t)
+      {
+        Eigen::Matrix4f inv = Eigen::Matrix4f::Identity ();
+        inv.topLeftCorner<3, 3> () = t.topLeftCorner<3, 3> ().transpose ();
+        inv.topRightCorner<3, 1> () = -inv.topLeftCorner<3, 3> () * t.topRightCorner<3, 1> ();
+        return inv;
+      }
+    }
+
     double
     CorrespondenceRejectorTensorVerification::getResolution () const
     {
@@ -84,20 +108,40 @@ namespace pcl
       model_tree_.setInputCloud (model_->fine.cloud);
       model_view_.reset ();
       scene_view_.reset ();
-
-      // An even, deterministic sample: every k-th fine scene vertex.
-      const PointCloudN& scene = *scene_->fine.cloud;
-      const std::size_t step = std::max<std::size_t> (1, scene.size () / static_cast<std::size_t> (std::max (1, params_.sample_points)));
-      scene_sample_.reset (new PointCloudN);
-      for (std::size_t i = 0; i < scene.size (); i += step)
-        scene_sample_->push_back (scene[i]);
-
+      scene_sample_ = evenSample (*scene_->fine.cloud, params_.sample_points);
+      if (params_.count_both_views)
+      {
+        scene_tree_.setInputCloud (scene_->fine.cloud);
+        model_sample_ = evenSample (*model_->fine.cloud, params_.sample_points);
+      }
       prepared_ = true;
+    }
+
+    double
+    CorrespondenceRejectorTensorVerification::sampledCorrespondences (const Eigen::Matrix4f& t, double radius) const
+    {
+      const auto scaled = [] (std::size_t count, const PointCloudN& sample, const PointCloudN& all) {
+        return static_cast<double> (count) * static_cast<double> (all.size ()) / static_cast<double> (sample.size ());
+      };
+      double count = scaled (countCorrespondences (*scene_sample_, t, model_tree_, radius), *scene_sample_, *scene_->fine.cloud);
+      if (params_.count_both_views)
+        count += scaled (countCorrespondences (*model_sample_, inverseRigid (t), scene_tree_, radius), *model_sample_, *model_->fine.cloud);
+      return count;
+    }
+
+    double
+    CorrespondenceRejectorTensorVerification::allCorrespondences (const Eigen::Matrix4f& t, double radius) const
+    {
+      double count = static_cast<double> (countCorrespondences (*scene_->fine.cloud, t, model_tree_, radius));
+      if (params_.count_both_views)
+        count += static_cast<double> (countCorrespondences (*model_->fine.cloud, inverseRigid (t), scene_tree_, radius));
+      return count;
     }
 
     std::size_t
     CorrespondenceRejectorTensorVerification::countCorrespondences (const PointCloudN& cloud, const Eigen::Matrix4f& t,
-                                                                   double radius) const
+                                                                   const pcl::KdTreeFLANN<pcl::PointNormal>& tree,
+                                                                   double radius)
     {
       const float r2 = static_cast<float> (radius * radius);
       pcl::Indices index (1);
@@ -107,7 +151,7 @@ namespace pcl
       for (const auto& p : cloud)
       {
         q.getVector4fMap () = t * p.getVector4fMap ();
-        if (model_tree_.nearestKSearch (q, 1, index, d2) == 1 && d2[0] <= r2)
+        if (tree.nearestKSearch (q, 1, index, d2) == 1 && d2[0] <= r2)
           ++count;
       }
       return count;
@@ -150,7 +194,7 @@ namespace pcl
       if (!scene_view_)
         scene_view_ = std::make_unique<RangeViewProjection> (scene_->fine, 3.0, 2.0, 16u << 20, scene_->resolution);
       return std::max (violationFraction (*scene_->fine.cloud, t, *model_view_, margin),
-                       violationFraction (*model_->fine.cloud, t.inverse (), *scene_view_, margin));
+                       violationFraction (*model_->fine.cloud, inverseRigid (t), *scene_view_, margin));
     }
 
     double
@@ -183,12 +227,10 @@ namespace pcl
         return false;
       }
 
-      // Steps 7-9: enough scene points near the model (n_c), estimated on the sample.
-      const double scale = static_cast<double> (scene_->fine.cloud->size ()) / static_cast<double> (scene_sample_->size ());
+      // Steps 7-9: enough correspondences (n_c), estimated on the samples.
       result.required_correspondences = params_.correspondence_fraction *
           static_cast<double> (std::min (model_->fine.cloud->size (), scene_->fine.cloud->size ()));
-      result.coarse_correspondences = scale * static_cast<double> (
-          countCorrespondences (*scene_sample_, hypothesis, params_.coarse_distance * d_res));
+      result.coarse_correspondences = sampledCorrespondences (hypothesis, params_.coarse_distance * d_res);
       if (result.coarse_correspondences < result.required_correspondences)
       {
         result.stage = TensorVerificationStage::COARSE_OVERLAP;
@@ -204,18 +246,16 @@ namespace pcl
       result.transform = refined.transform;
       result.icp_fitness = refined.rms;
 
-      // Steps 11-12: twice n_c scene points within d_res, over every scene point; the sample
-      // rejects clear failures first, since the full count costs a search per scene point.
-      const double sampled = scale * static_cast<double> (
-          countCorrespondences (*scene_sample_, result.transform, params_.fine_distance * d_res));
+      // Steps 11-12: twice n_c correspondences within d_res, over every point; the samples
+      // reject clear failures first, since the full count costs a search per point.
+      const double sampled = sampledCorrespondences (result.transform, params_.fine_distance * d_res);
       if (sampled < 0.8 * 2.0 * result.required_correspondences)
       {
         result.fine_correspondences = sampled;
         result.stage = TensorVerificationStage::FINE_OVERLAP;
         return false;
       }
-      result.fine_correspondences = static_cast<double> (
-          countCorrespondences (*scene_->fine.cloud, result.transform, params_.fine_distance * d_res));
+      result.fine_correspondences = allCorrespondences (result.transform, params_.fine_distance * d_res);
       if (result.fine_correspondences < 2.0 * result.required_correspondences)
       {
         result.stage = TensorVerificationStage::FINE_OVERLAP;
