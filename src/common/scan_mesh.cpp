@@ -18,20 +18,41 @@ namespace pcl
       return (*mesh.cloud)[i].getVector3fMap ().cast<double> ();
     }
 
-    /** Every triangle's edges as (low, high) vertex pairs, sorted: an interior edge appears twice. */
-    std::vector<std::pair<pcl::index_t, pcl::index_t>>
-    sortedEdges (const ScanMesh& mesh)
+    /** Call \a visit (a, b, count) for every undirected edge {a, b} (a < b) of the mesh once, in
+      * ascending (a, b) order, with the number of polygon sides on it (2 for an interior edge of a
+      * manifold, 1 on the border). The edges are bucketed by their lower vertex and each bucket (a
+      * vertex's valence) sorted on its own: a sort of every edge took 10-15 ms per bunny scan. */
+    template <typename Visit> void
+    forEachEdge (const ScanMesh& mesh, Visit visit)
     {
-      std::vector<std::pair<pcl::index_t, pcl::index_t>> edges;
-      edges.reserve (mesh.polygons.size () * 3);
-      for (const auto& poly : mesh.polygons)
-        for (std::size_t k = 0; k < poly.vertices.size (); ++k)
+      const std::size_t n = mesh.cloud->size ();
+      const auto sides = [&mesh] (auto side) {
+        for (const auto& poly : mesh.polygons)
+          for (std::size_t k = 0; k < poly.vertices.size (); ++k)
+          {
+            const pcl::index_t a = poly.vertices[k], b = poly.vertices[(k + 1) % poly.vertices.size ()];
+            side (std::min (a, b), std::max (a, b));
+          }
+      };
+      std::vector<std::size_t> offsets (n + 1, 0);
+      sides ([&] (pcl::index_t lo, pcl::index_t) { ++offsets[lo + 1]; });
+      for (std::size_t v = 0; v < n; ++v)
+        offsets[v + 1] += offsets[v];
+      std::vector<pcl::index_t> higher (offsets[n]);
+      std::vector<std::size_t> next (offsets.begin (), offsets.end () - 1);
+      sides ([&] (pcl::index_t lo, pcl::index_t hi) { higher[next[lo]++] = hi; });
+      for (std::size_t v = 0; v < n; ++v)
+      {
+        const auto first = higher.begin () + static_cast<std::ptrdiff_t> (offsets[v]);
+        const auto last = higher.begin () + static_cast<std::ptrdiff_t> (offsets[v + 1]);
+        std::sort (first, last);
+        for (auto i = first; i != last;)
         {
-          const pcl::index_t a = poly.vertices[k], b = poly.vertices[(k + 1) % poly.vertices.size ()];
-          edges.emplace_back (std::min (a, b), std::max (a, b));
+          const auto j = std::find_if (i, last, [i] (pcl::index_t b) { return b != *i; });
+          visit (static_cast<pcl::index_t> (v), *i, static_cast<std::size_t> (j - i));
+          i = j;
         }
-      std::sort (edges.begin (), edges.end ());
-      return edges;
+      }
     }
   }
 
@@ -39,30 +60,23 @@ namespace pcl
   meshResolution (const ScanMesh& mesh)
   {
     // Each interior edge is shared by two triangles; count it once.
-    std::vector<std::pair<pcl::index_t, pcl::index_t>> edges = sortedEdges (mesh);
-    edges.erase (std::unique (edges.begin (), edges.end ()), edges.end ());
-    if (edges.empty ())
-      return 0.0;
     double sum = 0.0;
-    for (const auto& e : edges)
-      sum += (vertex (mesh, e.first) - vertex (mesh, e.second)).norm ();
-    return sum / static_cast<double> (edges.size ());
+    std::size_t edges = 0;
+    forEachEdge (mesh, [&] (pcl::index_t a, pcl::index_t b, std::size_t) {
+      sum += (vertex (mesh, a) - vertex (mesh, b)).norm ();
+      ++edges;
+    });
+    return edges ? sum / static_cast<double> (edges) : 0.0;
   }
 
   std::vector<bool>
   meshBoundaryVertices (const ScanMesh& mesh)
   {
-    const std::vector<std::pair<pcl::index_t, pcl::index_t>> edges = sortedEdges (mesh);
     std::vector<bool> boundary (mesh.cloud->size (), false);
-    for (std::size_t i = 0; i < edges.size ();)
-    {
-      std::size_t j = i + 1;
-      while (j < edges.size () && edges[j] == edges[i])
-        ++j;
-      if (j - i == 1)
-        boundary[edges[i].first] = boundary[edges[i].second] = true;
-      i = j;
-    }
+    forEachEdge (mesh, [&] (pcl::index_t a, pcl::index_t b, std::size_t sides) {
+      if (sides == 1)
+        boundary[a] = boundary[b] = true;
+    });
     return boundary;
   }
 

@@ -43,8 +43,10 @@ namespace pcl
       int partners_per_vertex = 3;
       /** Minimum mutual angle theta_d of a pair's normals, degrees (Section 2: 5). */
       double min_normal_angle = 5.0;
-      /** Region growing over faces (the paper's method) rather than testing every face. */
-      bool region_growing = true;
+      /** Region growing over faces (the paper's method) rather than testing every face (default
+        * false): brute force is exact, and with 1000 faces per view it computes bun000's and bun045's
+        * tensors in about half the time (bench_tensor, BM_TensorsBunny at 400 faces: 1.5 times faster). */
+      bool region_growing = false;
       /** t_r, minimum overlap ratio R_O (Eq. 5; Section 4: 0.5). */
       float overlap_threshold = 0.5f;
       /** t_c, minimum correlation C_c (Eq. 6; Section 4: 0.5). */
