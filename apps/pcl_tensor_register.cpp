@@ -105,6 +105,7 @@ namespace
   int
   run (int argc, char** argv)
   {
+    pcl_tensor_tools::keepFreedMemoryForReuse ();
     std::string output;
     parse_argument (argc, argv, "-o", output);
     const std::vector<std::string> files = pcl_tensor_tools::scanFileArguments (argc, argv, {output});

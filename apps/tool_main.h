@@ -10,6 +10,10 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 #include <algorithm>
 #include <iostream>
 #include <string>
@@ -21,6 +25,21 @@ namespace pcl_tensor_tools
   constexpr int kExitBadInput = 2;
   /** Exit code when views could not be registered (verification refused every hypothesis). */
   constexpr int kExitNotRegistered = 3;
+
+  /** For a tool that runs once and must answer fast: each stage frees clouds of megabytes that the
+    * next allocates again. glibc returns such blocks to the system (mmap, trim) and each page faults
+    * back in; kept in the process, they are reused. On pcl_tensor_register bun000 bun045 this saves
+    * 2,500 of 16,500 page faults and 60 ms of 0.62 s (perf stat), for 6 MB more peak memory. On the
+    * 15 dragon scans pcl_tensor_model gained 6% (5.65 -> 5.33 s) for 15% more memory (218 -> 249 MB),
+    * so only pcl_tensor_register calls it. */
+  inline void
+  keepFreedMemoryForReuse ()
+  {
+#ifdef __GLIBC__
+    mallopt (M_MMAP_THRESHOLD, 256 << 20);
+    mallopt (M_TRIM_THRESHOLD, 1 << 30);
+#endif
+  }
 
   /** Run a tool: --help (or no argument) prints \a help; a pcl::PCLException from \a run becomes one
     * line on stderr and exit code 2; any other exception is an internal error (exit code 1). */
