@@ -153,6 +153,33 @@ TEST (CorrespondenceRejectorTensorVerification, APairUnderHalfOverlapCanPassOnly
   EXPECT_TRUE (rejector.verify (exact, result)) << "overlap " << overlap << ": " << toString (result.stage);
 }
 
+/** Credited with the sum of both views' counts, ICP slid one hypothesis of ring views 2 and 3 to a
+  * pose 140 degrees off with 6,192 correspondences against 6,115 needed, 2,829 of them the scene's;
+  * twice the smaller count (each view needs n_c of its own) refuses it. */
+TEST (CorrespondenceRejectorTensorVerification, CountingBothViewsPassesNoWrongHypothesisOnTheRing)
+{
+  for (int m = 1; m <= 3; ++m)
+  {
+    CorrespondenceRejectorTensorVerification rejector;
+    const pcl::Correspondences matches = setUp (rejector, m, m + 1);
+    TensorVerificationParams p;
+    p.count_both_views = true;
+    rejector.setParams (p);
+    const Eigen::Affine3d truth = views ()[m].pose.inverse () * views ()[m + 1].pose;
+    int passed = 0;
+    for (const auto& c : matches)
+    {
+      TensorVerificationResult r;
+      if (!rejector.verify (transformFromTensorPair ((*views ()[m].tensors)[c.index_match], (*views ()[m + 1].tensors)[c.index_query]), r))
+        continue;
+      ++passed;
+      const auto e = pcl::registrationError (Eigen::Affine3d (r.transform.cast<double> ()), truth, rejector.getResolution ());
+      EXPECT_LT (e.rotation_deg, 1.0) << m << " <- " << m + 1 << ", match " << c.index_query << " -> " << c.index_match;
+    }
+    EXPECT_GT (passed, 0) << m << " <- " << m + 1;
+  }
+}
+
 TEST (CorrespondenceRejectorTensorVerification, MissingInputThrows)
 {
   CorrespondenceRejectorTensorVerification rejector;
@@ -212,3 +239,4 @@ TEST (CorrespondenceRejectorTensorVerification, SurfaceInSpaceTheOtherSensorSawE
   rejector.setScene (scene, computeViewTensors (*scene, dims, defaults));
   EXPECT_TRUE (rejector.verify (Eigen::Matrix4f::Identity (), result)) << toString (result.stage);
 }
+

@@ -123,19 +123,22 @@ namespace pcl
       const auto scaled = [] (std::size_t count, const PointCloudN& sample, const PointCloudN& all) {
         return static_cast<double> (count) * static_cast<double> (all.size ()) / static_cast<double> (sample.size ());
       };
-      double count = scaled (countCorrespondences (*scene_sample_, t, model_tree_, radius), *scene_sample_, *scene_->fine.cloud);
-      if (params_.count_both_views)
-        count += scaled (countCorrespondences (*model_sample_, inverseRigid (t), scene_tree_, radius), *model_sample_, *model_->fine.cloud);
-      return count;
+      const double scene = scaled (countCorrespondences (*scene_sample_, t, model_tree_, radius), *scene_sample_, *scene_->fine.cloud);
+      if (!params_.count_both_views)
+        return scene;
+      const double model = scaled (countCorrespondences (*model_sample_, inverseRigid (t), scene_tree_, radius), *model_sample_,
+                                   *model_->fine.cloud);
+      return 2.0 * std::min (scene, model);  // each view must bring its half (TensorVerificationParams)
     }
 
     double
     CorrespondenceRejectorTensorVerification::allCorrespondences (const Eigen::Matrix4f& t, double radius) const
     {
-      double count = static_cast<double> (countCorrespondences (*scene_->fine.cloud, t, model_tree_, radius));
-      if (params_.count_both_views)
-        count += static_cast<double> (countCorrespondences (*model_->fine.cloud, inverseRigid (t), scene_tree_, radius));
-      return count;
+      const auto scene = static_cast<double> (countCorrespondences (*scene_->fine.cloud, t, model_tree_, radius));
+      if (!params_.count_both_views)
+        return scene;
+      const auto model = static_cast<double> (countCorrespondences (*model_->fine.cloud, inverseRigid (t), scene_tree_, radius));
+      return 2.0 * std::min (scene, model);
     }
 
     std::size_t

@@ -21,9 +21,9 @@ namespace pcl
       *
       * Each correspondence (scene tensor -> model tensor) gives one rigid hypothesis (Eq. 7-8). It
       * survives only if, in turn: the registered reduced meshes exceed the object's dimensions D by
-      * at most t_D (Eq. 9); at least n_c = min(|M_m|, |M_s|)/4 correspondences (points of either view
-      * with a point of the other) lie within 2 d_res; after point-to-plane ICP, at least 2 n_c lie
-      * within d_res; and the registered fine
+      * at most t_D (Eq. 9); at least n_c = min(|M_m|, |M_s|)/4 scene points lie within 2 d_res of the
+      * model (TensorVerificationParams::count_both_views: n_c/2 of each view); after point-to-plane
+      * ICP, at least 2 n_c lie within d_res (n_c of each view); and the registered fine
       * meshes exceed D by at most 2 d_res. verify() runs the test on one hypothesis and reports
       * where it failed; getRemainingCorrespondences() keeps the correspondences that pass.
       *
@@ -96,10 +96,10 @@ namespace pcl
         /** Points of \a cloud, under \a t, with a point of \a tree's cloud within \a radius. */
         static std::size_t countCorrespondences (const PointCloudN& cloud, const Eigen::Matrix4f& t,
                                                  const pcl::KdTreeFLANN<pcl::PointNormal>& tree, double radius);
-        /** Correspondences within \a radius under \a t, estimated from the samples of both views
-          * (of the scene alone without count_both_views). */
+        /** Correspondences within \a radius under \a t, estimated from the samples: the scene's, or
+          * with count_both_views twice the smaller of the two views' counts. */
         double sampledCorrespondences (const Eigen::Matrix4f& t, double radius) const;
-        /** Correspondences within \a radius under \a t over every point of both views (or the scene's). */
+        /** The same over every point. */
         double allCorrespondences (const Eigen::Matrix4f& t, double radius) const;
         /** The larger free-space violation of the two views under \a t (TensorVerificationParams). */
         double freeSpaceViolation (const Eigen::Matrix4f& t, double margin);
