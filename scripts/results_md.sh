@@ -36,6 +36,14 @@ section () {  # name title description [CSV of the baseline's rows]
 }
 
 last_run="no complete run of the command recorded yet"
+# Experiments run one by one: say how many ran on every pair, and their summed wall time.
+runs=$(ls "$dir"/run_*.csv 2> /dev/null | grep -v run_loading || true)
+if [ -n "$runs" ]; then
+  total=$(echo "$runs" | wc -l)
+  full=$(for f in $runs; do tail -n 1 "$f"; done | awk -F, '$2 == "full"' | wc -l)
+  seconds=$(for f in $runs; do tail -n 1 "$f"; done | awk -F, '{s += $4} END {print s}')
+  last_run="no complete run of the command recorded; its experiments were last run one by one, $full of $total on every pair, $seconds s of wall time in all"
+fi
 if [ -f "$dir/run.csv" ]; then
   IFS=, read -r args started seconds cores < <(tail -n 1 "$dir/run.csv")
   last_run="last run: \`$args\`, started $started, $seconds s wall time on $cores shared cores"
