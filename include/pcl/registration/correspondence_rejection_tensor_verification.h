@@ -91,7 +91,8 @@ namespace pcl
       private:
         using PointCloudN = pcl::PointCloud<pcl::PointNormal>;
 
-        /** Build the model's search tree, the scene sample and ICP's target, once per input. */
+        /** Build the model's search tree and the scene's sample (ICP's input), once per input; with
+          * count_both_views also the scene's tree and the model's sample. */
         void prepare ();
         /** Points of \a cloud, under \a t, with a point of \a tree's cloud within \a radius. */
         static std::size_t countCorrespondences (const PointCloudN& cloud, const Eigen::Matrix4f& t,
