@@ -118,27 +118,19 @@ namespace pcl
     }
 
     double
-    CorrespondenceRejectorTensorVerification::sampledCorrespondences (const Eigen::Matrix4f& t, double radius) const
+    CorrespondenceRejectorTensorVerification::correspondences (const PointCloudN& scene_points, const PointCloudN& model_points,
+                                                              const Eigen::Matrix4f& t, double radius) const
     {
-      const auto scaled = [] (std::size_t count, const PointCloudN& sample, const PointCloudN& all) {
-        return static_cast<double> (count) * static_cast<double> (all.size ()) / static_cast<double> (sample.size ());
+      // Counts on a sample stand for the whole view; on the whole view the scale is exactly 1.
+      const auto scaled = [] (std::size_t count, const PointCloudN& points, const PointCloudN& view) {
+        return static_cast<double> (count) * static_cast<double> (view.size ()) / static_cast<double> (points.size ());
       };
-      const double scene = scaled (countCorrespondences (*scene_sample_, t, model_tree_, radius), *scene_sample_, *scene_->fine.cloud);
+      const double scene = scaled (countCorrespondences (scene_points, t, model_tree_, radius), scene_points, *scene_->fine.cloud);
       if (!params_.count_both_views)
         return scene;
-      const double model = scaled (countCorrespondences (*model_sample_, inverseRigid (t), scene_tree_, radius), *model_sample_,
+      const double model = scaled (countCorrespondences (model_points, inverseRigid (t), scene_tree_, radius), model_points,
                                    *model_->fine.cloud);
       return 2.0 * std::min (scene, model);  // each view must bring its half (TensorVerificationParams)
-    }
-
-    double
-    CorrespondenceRejectorTensorVerification::allCorrespondences (const Eigen::Matrix4f& t, double radius) const
-    {
-      const auto scene = static_cast<double> (countCorrespondences (*scene_->fine.cloud, t, model_tree_, radius));
-      if (!params_.count_both_views)
-        return scene;
-      const auto model = static_cast<double> (countCorrespondences (*model_->fine.cloud, inverseRigid (t), scene_tree_, radius));
-      return 2.0 * std::min (scene, model);
     }
 
     std::size_t
@@ -233,7 +225,7 @@ namespace pcl
       // Steps 7-9: enough correspondences (n_c), estimated on the samples.
       result.required_correspondences = params_.correspondence_fraction *
           static_cast<double> (std::min (model_->fine.cloud->size (), scene_->fine.cloud->size ()));
-      result.coarse_correspondences = sampledCorrespondences (hypothesis, params_.coarse_distance * d_res);
+      result.coarse_correspondences = correspondences (*scene_sample_, *model_sample_, hypothesis, params_.coarse_distance * d_res);
       if (result.coarse_correspondences < result.required_correspondences)
       {
         result.stage = TensorVerificationStage::COARSE_OVERLAP;
@@ -251,14 +243,15 @@ namespace pcl
 
       // Steps 11-12: twice n_c correspondences within d_res, over every point; the samples
       // reject clear failures first, since the full count costs a search per point.
-      const double sampled = sampledCorrespondences (result.transform, params_.fine_distance * d_res);
+      const double sampled = correspondences (*scene_sample_, *model_sample_, result.transform, params_.fine_distance * d_res);
       if (sampled < 0.8 * 2.0 * result.required_correspondences)
       {
         result.fine_correspondences = sampled;
         result.stage = TensorVerificationStage::FINE_OVERLAP;
         return false;
       }
-      result.fine_correspondences = allCorrespondences (result.transform, params_.fine_distance * d_res);
+      result.fine_correspondences = correspondences (*scene_->fine.cloud, *model_->fine.cloud, result.transform,
+                                                     params_.fine_distance * d_res);
       if (result.fine_correspondences < 2.0 * result.required_correspondences)
       {
         result.stage = TensorVerificationStage::FINE_OVERLAP;

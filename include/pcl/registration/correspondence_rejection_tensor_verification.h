@@ -97,11 +97,11 @@ namespace pcl
         /** Points of \a cloud, under \a t, with a point of \a tree's cloud within \a radius. */
         static std::size_t countCorrespondences (const PointCloudN& cloud, const Eigen::Matrix4f& t,
                                                  const pcl::KdTreeFLANN<pcl::PointNormal>& tree, double radius);
-        /** Correspondences within \a radius under \a t, estimated from the samples: the scene's, or
-          * with count_both_views twice the smaller of the two views' counts. */
-        double sampledCorrespondences (const Eigen::Matrix4f& t, double radius) const;
-        /** The same over every point. */
-        double allCorrespondences (const Eigen::Matrix4f& t, double radius) const;
+        /** Correspondences within \a radius under \a t, counted on \a scene_points (and with
+          * count_both_views on \a model_points: twice the smaller count), scaled from those points
+          * (the samples or the whole views) to the whole views. */
+        double correspondences (const PointCloudN& scene_points, const PointCloudN& model_points,
+                                const Eigen::Matrix4f& t, double radius) const;
         /** The larger free-space violation of the two views under \a t (TensorVerificationParams). */
         double freeSpaceViolation (const Eigen::Matrix4f& t, double margin);
         /** max(D_combined - D) of the model points and the transformed scene points. */
