@@ -10,6 +10,7 @@
 #include <pcl/io/ply_io.h>
 #include <pcl/io/range_scan_io.h>
 #include <pcl/io/stanford_conf.h>
+#include <pcl/io/view_pairs_io.h>
 #include <pcl/registration/registration_error.h>
 #include <pcl/registration/tensor_registration.h>
 #include <pcl/simulation/example_object.h>
@@ -229,6 +230,35 @@ TEST (HardeningLoadRangeScan, UnreadableFileThrowsIOException)
   if (std::ifstream (path).good ())
     GTEST_SKIP () << "SKIPPED: this user (root?) reads mode-000 files; the directory case covers unreadable input";
   EXPECT_THROW (pcl::io::loadRangeScan (path), pcl::IOException);
+}
+
+TEST (HardeningLoadRangeScan, ReadErrorThrowsIOExceptionNamingIt)
+{
+  // A file that opens but whose read fails (EIO), even for root: /proc/self/mem at offset 0 is the
+  // unmapped first page. Before, the readers took the failed read for the end of the file and
+  // blamed its content ("does not start with the PLY magic line").
+  if (!std::filesystem::exists ("/proc/self/mem"))
+    GTEST_SKIP () << "SKIPPED: no /proc/self/mem on this system";
+  for (const std::string name : {"read_error.ply", "read_error.pcd", "read_error.conf", "read_error.pairs"})
+  {
+    const std::string path = ::testing::TempDir () + name;
+    std::filesystem::remove (path);
+    std::filesystem::create_symlink ("/proc/self/mem", path);
+    try
+    {
+      if (name.find (".conf") != std::string::npos)
+        pcl::io::loadStanfordConf (path);
+      else if (name.find (".pairs") != std::string::npos)
+        pcl::io::loadViewPairs (path, {"a.ply", "b.ply"});
+      else
+        pcl::io::loadRangeScan (path);
+      ADD_FAILURE () << name << " was read";
+    }
+    catch (const pcl::IOException& e)
+    {
+      EXPECT_NE (std::string (e.what ()).find ("cannot read"), std::string::npos) << e.what ();
+    }
+  }
 }
 
 TEST (HardeningStanfordConf, BrokenFilesThrowIOException)

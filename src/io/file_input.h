@@ -6,8 +6,12 @@
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/console/print.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 
 namespace pcl
@@ -27,6 +31,37 @@ namespace pcl
           PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' is a directory, not a file");
         if (!std::ifstream (path).good ())
           PCL_TENSOR_THROW (pcl::IOException, "cannot open '" << path << "'");
+      }
+
+      /** \brief The whole content of \a path; pcl::IOException when it cannot be opened or a read
+        * fails midway. A stream read that fails looks like the end of the file, so the readers would
+        * report a device error (EIO) as a cut or malformed file: stdio's error flag tells them apart.
+        */
+      inline std::string
+      readFile (const std::string& path)
+      {
+        requireReadableFile (path);
+        const std::unique_ptr<std::FILE, int (*) (std::FILE*)> file (std::fopen (path.c_str (), "rb"), &std::fclose);
+        if (!file)
+          PCL_TENSOR_THROW (pcl::IOException, "cannot open '" << path << "': " << std::strerror (errno));
+        std::string data;
+        char buffer[1 << 16];
+        std::size_t n;
+        while ((n = std::fread (buffer, 1, sizeof (buffer), file.get ())) > 0)
+          data.append (buffer, n);
+        if (std::ferror (file.get ()))
+          PCL_TENSOR_THROW (pcl::IOException, "cannot read '" << path << "': " << std::strerror (errno));
+        return data;
+      }
+
+      /** \brief What follows a header that \a in (a stream over \a bytes) has read; empty when the
+        * header read ended at the end of the bytes (tellg is then -1).
+        */
+      inline std::string
+      bytesAfterHeader (const std::string& bytes, std::istream& in)
+      {
+        const std::streamoff at = in.tellg ();
+        return at < 0 ? std::string () : bytes.substr (static_cast<std::size_t> (at));
       }
 
       /** \brief Throw pcl::IOException naming the file and line a header reader stopped at. */

@@ -12,8 +12,6 @@
 #include <charconv>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <sstream>
 #include <vector>
 
@@ -316,11 +314,10 @@ namespace pcl
     void
     readRangePCD (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud)
     {
-      std::ifstream file (path, std::ios::binary);
-      if (!file)
-        PCL_TENSOR_THROW (pcl::IOException, "cannot open '" << path << "'");
+      const std::string bytes = detail::readFile (path);
+      std::istringstream file (bytes);
       const PcdHeader header = parseHeader (file, path);
-      const std::string data ((std::istreambuf_iterator<char> (file)), std::istreambuf_iterator<char> ());
+      const std::string data = detail::bytesAfterHeader (bytes, file);
       pcl::PointCloud<pcl::PointXYZ> out;
       if (header.points > 0)
       {

@@ -11,8 +11,6 @@
 #include <charconv>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <sstream>
 #include <vector>
@@ -515,11 +513,10 @@ namespace pcl
     void
     readRangePLY (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud)
     {
-      std::ifstream file (path, std::ios::binary);
-      if (!file)
-        PCL_TENSOR_THROW (pcl::IOException, "cannot open '" << path << "'");
+      const std::string bytes = detail::readFile (path);
+      std::istringstream file (bytes);
       const PlyHeader header = parseHeader (file, path);
-      const std::string data ((std::istreambuf_iterator<char> (file)), std::istreambuf_iterator<char> ());
+      const std::string data = detail::bytesAfterHeader (bytes, file);
       const char* begin = data.data ();
       const char* end = begin + data.size ();
 

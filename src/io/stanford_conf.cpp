@@ -6,7 +6,6 @@
 #include <pcl/common/tensor_exceptions.h>
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <sstream>
 
@@ -57,10 +56,7 @@ namespace pcl
     std::vector<StanfordConfEntry>
     loadStanfordConf (const std::string& path)
     {
-      detail::requireReadableFile (path);
-      std::ifstream file (path);
-      if (!file)
-        PCL_TENSOR_THROW (pcl::IOException, "cannot open '" << path << "'");
+      std::istringstream file (detail::readFile (path));
       std::vector<StanfordConfEntry> entries;
       std::string line;
       for (int line_no = 1; std::getline (file, line); ++line_no)

@@ -5,7 +5,6 @@
 #include "file_input.h"
 #include <pcl/common/tensor_exceptions.h>
 
-#include <fstream>
 #include <sstream>
 
 namespace pcl
@@ -55,8 +54,7 @@ namespace pcl
     std::vector<std::pair<int, int>>
     loadViewPairs (const std::string& path, const std::vector<std::string>& view_names)
     {
-      detail::requireReadableFile (path);
-      std::ifstream file (path);
+      std::istringstream file (detail::readFile (path));
       std::vector<std::pair<int, int>> pairs;
       std::string line;
       for (int number = 1; std::getline (file, line); ++number)

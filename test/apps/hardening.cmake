@@ -8,7 +8,7 @@ add_test(NAME app_make_bad_inputs
 set_tests_properties(app_make_bad_inputs PROPERTIES FIXTURES_SETUP bad_inputs FIXTURES_REQUIRED register_views)
 
 # Files every app must refuse with exit code 2.
-set(PCL_TENSOR_BAD_INPUTS empty.ply directory.ply truncated.ply wrong_count.ply garbage.ply all_nonfinite.ply
+set(PCL_TENSOR_BAD_INPUTS empty.ply directory.ply read_error.ply truncated.ply wrong_count.ply garbage.ply all_nonfinite.ply
     duplicates.ply two_points.ply collinear.ply empty.pcd garbage.pcd)
 
 # pcl_tensor_bad_input_tests(PREFIX COMMAND app args... @INPUT@ args...): one test PREFIX_bad_<file> per

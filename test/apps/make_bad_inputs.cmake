@@ -27,6 +27,9 @@ endforeach()
 string(ASCII ${codes} alphabet)
 string(RANDOM LENGTH 4096 ALPHABET "${alphabet}" RANDOM_SEED 2006 garbage)
 file(WRITE ${OUT_DIR}/garbage.ply "${garbage}")
+# A file that opens but fails to read (EIO), which root cannot read either, unlike a mode-000 file:
+# /proc/self/mem read at offset 0, the unmapped page of whichever process reads it.
+file(CREATE_LINK /proc/self/mem ${OUT_DIR}/read_error.ply SYMBOLIC)
 # PCL 1.13's PCD reader crashed on these two (the loader now checks the header first).
 file(WRITE ${OUT_DIR}/empty.pcd "")
 file(WRITE ${OUT_DIR}/garbage.pcd "${garbage}")
