@@ -39,6 +39,8 @@ namespace
     print_info ("  --order best|scene order of hypotheses (default best)\n");
     print_info ("  --max-hypotheses N give up after N hypotheses, 0 = all (default %d)\n", d.max_hypotheses);
     print_info ("  --nc F             n_c as a fraction of the smaller view (default %g)\n", d.verification.correspondence_fraction);
+    print_info ("  --count both|scene views whose correspondences verification counts (default %s)\n",
+                d.verification.count_both_views ? "both" : "scene");
     print_info ("  --dims X,Y,Z       object dimensions D (default: from the two views, Eq. 1)\n");
     print_info ("  --viewpoint x,y,z  perspective sensor at x,y,z looking at each scan (default: file pose; +z for PLY)\n");
     print_info ("Exit codes: 0 registered, 3 not registered (no hypothesis passed verification), 2 bad input or usage.\n");
@@ -60,6 +62,11 @@ namespace
       p.order = pcl::registration::TensorMatchOrder::SCENE_ORDER;
     else if (order != "best")
       PCL_TENSOR_THROW (pcl::BadArgumentException, "--order must be 'best' or 'scene', got '" << order << "'");
+    std::string count = p.verification.count_both_views ? "both" : "scene";
+    parse_argument (argc, argv, "--count", count);
+    if (count != "both" && count != "scene")
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "--count must be 'both' or 'scene', got '" << count << "'");
+    p.verification.count_both_views = (count == "both");
     return p;
   }
 

@@ -72,8 +72,8 @@ namespace
                  "  --max-hypotheses N   tensor method: give up after N hypotheses, 0 = all (default %d)\n"
                  "  --tr T, --tc T       tensor method: t_r (Eq. 5) and t_c (Eq. 6) (default %g, %g)\n"
                  "  --faces N            tensor method: faces per reduced mesh (default %d)\n"
-                 "  --count-both-views   tensor method: verification counts the correspondences of both views\n"
-                 "                       (TensorVerificationParams::count_both_views; default: the scene's only)\n"
+                 "  --count-scene-only   tensor method: verification counts the scene's correspondences only\n"
+                 "                       (TensorVerificationParams::count_both_views off; default: both views)\n"
                  "  --camera W,H         synthetic camera size in pixels (default %d,%d; fov %g deg)\n"
                  "  --noise S            synthetic views: noise sigma along the viewing direction, in d_res (default 0)\n"
                  "  --leaf-res F         baseline voxel leaf in d_res (default %g)\n"
@@ -96,8 +96,8 @@ namespace
     parse_argument (argc, argv, "--tr", o.params.overlap_threshold);
     parse_argument (argc, argv, "--tc", o.params.correlation_threshold);
     parse_argument (argc, argv, "--faces", o.params.preparation.target_faces);
-    if (pcl::console::find_switch (argc, argv, "--count-both-views"))
-      o.params.verification.count_both_views = true;
+    if (pcl::console::find_switch (argc, argv, "--count-scene-only"))
+      o.params.verification.count_both_views = false;
     parse_argument (argc, argv, "--leaf-res", o.baseline.leaf_resolutions);
     parse_argument (argc, argv, "--max-pairs", o.max_pairs);
     parse_argument (argc, argv, "--noise", o.noise);

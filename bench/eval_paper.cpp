@@ -95,8 +95,8 @@ namespace
                  "  --out DIR      CSVs and summaries (default %s)\n"
                  "  --data DIR     third-party data (default %s)\n"
                  "  --max-hypotheses N   tensor method's cap (default %d)\n"
-                 "  --count-both-views   tensor method: verification counts the correspondences of both views\n"
-                 "                 (TensorVerificationParams::count_both_views)\n",
+                 "  --count-scene-only   tensor method: verification counts the scene's correspondences only\n"
+                 "                 (TensorVerificationParams::count_both_views off; default: both views)\n",
                  name, kQuickPairs, kQuickPairs, d.out.c_str (), d.data.c_str (), d.params.max_hypotheses);
   }
 
@@ -111,8 +111,8 @@ namespace
     parse_argument (argc, argv, "--pairs", o.max_pairs);
     if (pcl::console::find_switch (argc, argv, "--quick"))
       o.max_pairs = kQuickPairs;
-    if (pcl::console::find_switch (argc, argv, "--count-both-views"))
-      o.params.verification.count_both_views = true;
+    if (pcl::console::find_switch (argc, argv, "--count-scene-only"))
+      o.params.verification.count_both_views = false;
     return o;
   }
 
