@@ -47,11 +47,13 @@ namespace
                  "  --global-distance D  pairing distance of the global step in d_res (default %g)\n"
                  "  --global-tolerance T  global verification: allowed excess over D in d_res (default %g)\n"
                  "  --fine-dimension-tolerance T  local verification after ICP: allowed excess over D in d_res (default %g)\n"
+                 "  --checked-dimensions N  largest principal extents both dimension checks compare with D (default %d)\n"
                  "  --min-overlap F      pairs found for the global step: overlap fraction, 0 = none (default %g)\n"
                  "  --out DIR            where the CSVs go (default %s)\n"
                  "  --data DIR           third-party data (default %s)\n",
                  name, d.lum_rounds, d.params.max_references, d.params.global.max_iterations, d.params.global.max_distance,
-                 d.params.global_verification.tolerance, d.params.pairwise.verification.fine_dimension_tolerance, d.params.min_overlap, d.out.c_str (), d.data.c_str ());
+                 d.params.global_verification.tolerance, d.params.pairwise.verification.fine_dimension_tolerance,
+                 d.params.pairwise.verification.checked_dimensions, d.params.min_overlap, d.out.c_str (), d.data.c_str ());
   }
 
   void
@@ -205,6 +207,8 @@ main (int argc, char** argv)
   pcl::console::parse_argument (argc, argv, "--min-overlap", p.min_overlap);
   pcl::console::parse_argument (argc, argv, "--global-tolerance", p.global_verification.tolerance);
   pcl::console::parse_argument (argc, argv, "--fine-dimension-tolerance", p.pairwise.verification.fine_dimension_tolerance);
+  if (pcl::console::parse_argument (argc, argv, "--checked-dimensions", p.pairwise.verification.checked_dimensions) >= 0)
+    p.global_verification.checked_dimensions = p.pairwise.verification.checked_dimensions;
   pcl::console::setVerbosityLevel (pcl::console::L_ERROR);
   try
   {

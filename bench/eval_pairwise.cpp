@@ -74,13 +74,15 @@ namespace
                  "  --faces N            tensor method: faces per reduced mesh (default %d)\n"
                  "  --count-scene-only   tensor method: verification counts the scene's correspondences only\n"
                  "                       (TensorVerificationParams::count_both_views off; default: both views)\n"
+                 "  --checked-dimensions N  largest principal extents local verification compares with D (default %d)\n"
                  "  --camera W,H         synthetic camera size in pixels (default %d,%d; fov %g deg)\n"
                  "  --noise S            synthetic views: noise sigma along the viewing direction, in d_res (default 0)\n"
                  "  --leaf-res F         baseline voxel leaf in d_res (default %g)\n"
                  "  --max-pairs N        evaluate only the first N pairs of each set, 0 = all (default 0)\n"
                  "  --runs N             repetitions for --speed (default %d)\n",
                  name, d.out.c_str (), d.data.c_str (), d.app.c_str (), d.params.max_hypotheses, d.params.overlap_threshold,
-                 d.params.correlation_threshold, d.params.preparation.target_faces, d.camera.width,
+                 d.params.correlation_threshold, d.params.preparation.target_faces,
+                 d.params.verification.checked_dimensions, d.camera.width,
                  d.camera.height, d.camera.fov_deg, d.baseline.leaf_resolutions, d.runs);
   }
 
@@ -98,6 +100,7 @@ namespace
     parse_argument (argc, argv, "--faces", o.params.preparation.target_faces);
     if (pcl::console::find_switch (argc, argv, "--count-scene-only"))
       o.params.verification.count_both_views = false;
+    parse_argument (argc, argv, "--checked-dimensions", o.params.verification.checked_dimensions);
     parse_argument (argc, argv, "--leaf-res", o.baseline.leaf_resolutions);
     parse_argument (argc, argv, "--max-pairs", o.max_pairs);
     parse_argument (argc, argv, "--noise", o.noise);

@@ -96,8 +96,10 @@ namespace
                  "  --data DIR     third-party data (default %s)\n"
                  "  --max-hypotheses N   tensor method's cap (default %d)\n"
                  "  --count-scene-only   tensor method: verification counts the scene's correspondences only\n"
-                 "                 (TensorVerificationParams::count_both_views off; default: both views)\n",
-                 name, kQuickPairs, kQuickPairs, d.out.c_str (), d.data.c_str (), d.params.max_hypotheses);
+                 "                 (TensorVerificationParams::count_both_views off; default: both views)\n"
+                 "  --checked-dimensions N  largest principal extents local verification compares with D (default %d)\n",
+                 name, kQuickPairs, kQuickPairs, d.out.c_str (), d.data.c_str (), d.params.max_hypotheses,
+                 d.params.verification.checked_dimensions);
   }
 
   Options
@@ -113,6 +115,7 @@ namespace
       o.max_pairs = kQuickPairs;
     if (pcl::console::find_switch (argc, argv, "--count-scene-only"))
       o.params.verification.count_both_views = false;
+    parse_argument (argc, argv, "--checked-dimensions", o.params.verification.checked_dimensions);
     return o;
   }
 
