@@ -13,6 +13,9 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <string_view>
+#include <istream>
+#include <streambuf>
 
 namespace pcl
 {
@@ -20,15 +23,24 @@ namespace pcl
   {
     namespace detail
     {
-      /** \brief Throw pcl::IOException unless \a path is a file this process can open for reading.
-        * A directory opens like a file on Linux but reads as nothing, so it is refused by name.
+      /** \brief Throw pcl::IOException when \a path is a directory: it opens like a file on Linux but
+        * reads as nothing, so it is refused by name.
         */
       inline void
-      requireReadableFile (const std::string& path)
+      refuseDirectory (const std::string& path)
       {
         std::error_code ec;
         if (std::filesystem::is_directory (path, ec))
           PCL_TENSOR_THROW (pcl::IOException, "'" << path << "' is a directory, not a file");
+      }
+
+      /** \brief Throw pcl::IOException unless \a path is a file this process can open for reading
+        * (for files that another library reads; our readers use readFile()).
+        */
+      inline void
+      requireReadableFile (const std::string& path)
+      {
+        refuseDirectory (path);
         if (!std::ifstream (path).good ())
           PCL_TENSOR_THROW (pcl::IOException, "cannot open '" << path << "'");
       }
@@ -40,7 +52,7 @@ namespace pcl
       inline std::string
       readFile (const std::string& path)
       {
-        requireReadableFile (path);
+        refuseDirectory (path);
         const std::unique_ptr<std::FILE, int (*) (std::FILE*)> file (std::fopen (path.c_str (), "rb"), &std::fclose);
         if (!file)
           PCL_TENSOR_THROW (pcl::IOException, "cannot open '" << path << "': " << std::strerror (errno));
@@ -54,15 +66,19 @@ namespace pcl
         return data;
       }
 
-      /** \brief What follows a header that \a in (a stream over \a bytes) has read; empty when the
-        * header read ended at the end of the bytes (tellg is then -1).
+      /** \brief An istream over bytes already in memory, without the copy std::istringstream makes,
+        * for the header parsers; rest() is what they have not read (the body).
         */
-      inline std::string
-      bytesAfterHeader (const std::string& bytes, std::istream& in)
+      class ByteStream : private std::streambuf, public std::istream
       {
-        const std::streamoff at = in.tellg ();
-        return at < 0 ? std::string () : bytes.substr (static_cast<std::size_t> (at));
-      }
+        public:
+          explicit ByteStream (std::string_view bytes) : std::istream (this)
+          {
+            char* begin = const_cast<char*> (bytes.data ());  // only read: a get area is never written
+            setg (begin, begin, begin + bytes.size ());
+          }
+          std::string_view rest () const { return {gptr (), static_cast<std::size_t> (egptr () - gptr ())}; }
+      };
 
       /** \brief Throw pcl::IOException naming the file and line a header reader stopped at. */
       [[noreturn]] inline void

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstring>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 namespace pcl
@@ -214,7 +215,7 @@ namespace pcl
 
       /** DATA binary: the points one after the other, point_step bytes each. */
       void
-      readBinary (const std::string& data, const PcdHeader& h, pcl::PointCloud<pcl::PointXYZ>& cloud, const std::string& path)
+      readBinary (std::string_view data, const PcdHeader& h, pcl::PointCloud<pcl::PointXYZ>& cloud, const std::string& path)
       {
         if (h.points > data.size () / h.point_step)
           dataError (path, std::to_string (h.points) + " points of " + std::to_string (h.point_step)
@@ -232,7 +233,7 @@ namespace pcl
       /** DATA binary_compressed: compressed and uncompressed sizes, then LZF data that uncompresses to
         * each field's values for all points in turn (fields named "_", padding, are not stored). */
       void
-      readCompressed (const std::string& data, const PcdHeader& h, pcl::PointCloud<pcl::PointXYZ>& cloud, const std::string& path)
+      readCompressed (std::string_view data, const PcdHeader& h, pcl::PointCloud<pcl::PointXYZ>& cloud, const std::string& path)
       {
         std::uint32_t sizes[2] = {0, 0};  // in the machine's byte order, as PCL writes them
         if (data.size () < sizeof (sizes))
@@ -270,7 +271,7 @@ namespace pcl
 
       /** DATA ascii: a line per point, as many values as the fields' counts add up to. */
       void
-      readAscii (const std::string& data, const PcdHeader& h, pcl::PointCloud<pcl::PointXYZ>& cloud, const std::string& path)
+      readAscii (std::string_view data, const PcdHeader& h, pcl::PointCloud<pcl::PointXYZ>& cloud, const std::string& path)
       {
         std::size_t per_point = 0;
         for (const auto& f : h.fields)
@@ -283,7 +284,7 @@ namespace pcl
           for (std::size_t k = 0; k < fieldIndex (h, axes[a]); ++k)
             column[a] += h.fields[k].count;
         cloud.resize (h.points);
-        std::istringstream lines (data);
+        detail::ByteStream lines (data);
         std::string line;
         for (std::size_t i = 0; i < cloud.size ();)
         {
@@ -315,9 +316,9 @@ namespace pcl
     readRangePCD (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud)
     {
       const std::string bytes = detail::readFile (path);
-      std::istringstream file (bytes);
+      detail::ByteStream file (bytes);
       const PcdHeader header = parseHeader (file, path);
-      const std::string data = detail::bytesAfterHeader (bytes, file);
+      const std::string_view data = file.rest ();
       pcl::PointCloud<pcl::PointXYZ> out;
       if (header.points > 0)
       {

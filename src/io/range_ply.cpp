@@ -13,6 +13,7 @@
 #include <cstring>
 #include <limits>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 namespace pcl
@@ -514,9 +515,9 @@ namespace pcl
     readRangePLY (const std::string& path, pcl::PointCloud<pcl::PointXYZ>& cloud)
     {
       const std::string bytes = detail::readFile (path);
-      std::istringstream file (bytes);
+      detail::ByteStream file (bytes);
       const PlyHeader header = parseHeader (file, path);
-      const std::string data = detail::bytesAfterHeader (bytes, file);
+      const std::string_view data = file.rest ();
       const char* begin = data.data ();
       const char* end = begin + data.size ();
 
