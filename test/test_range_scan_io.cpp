@@ -32,7 +32,8 @@ TEST (RangeScanIO, StanfordScansLoadAsOrganizedGridsWithHonestDenseFlag)
       finite += pcl::isXYZFinite (p);
     EXPECT_EQ (finite, scan.finite_points) << name;
     EXPECT_GT (scan.finite_points, 10000u) << name;
-    EXPECT_TRUE (scan.viewpoint.orthographic) << "PLY carries no pose: the default is +z";
+    // The file carries no pose, but its grid is a pushbroom's (GridSensorFit).
+    EXPECT_EQ (scan.viewpoint.model, pcl::ScanViewpoint::Model::pushbroom) << name;
   }
 }
 
@@ -58,7 +59,7 @@ TEST (RangeScanIO, PcdSensorPoseBecomesThePerspectiveViewpoint)
   const pcl::io::RangeScan scan = pcl::io::loadRangeScan (path);
   EXPECT_EQ (scan.cloud->size (), 5u) << "the NaN point of an unorganized cloud is dropped";
   EXPECT_TRUE (scan.cloud->is_dense);
-  EXPECT_FALSE (scan.viewpoint.orthographic);
+  EXPECT_EQ (scan.viewpoint.model, pcl::ScanViewpoint::Model::perspective);
   EXPECT_TRUE (scan.viewpoint.sensor_pose.translation ().isApprox (Eigen::Vector3d (1, 2, 3)));
 }
 

@@ -158,19 +158,24 @@ TEST (RangeScanTriangulation, ShuffledScanThroughDelaunayHasTheGridArea)
       shuffled.push_back (p);
   std::mt19937 rng (2006);
   std::shuffle (shuffled.begin (), shuffled.end (), rng);
+  // The scan's own sensor (the pushbroom fitted to its grid) defines the retinal plane, as it would
+  // for a user who kept the sensor but lost the grid.
+  ASSERT_EQ (scan.viewpoint.model, pcl::ScanViewpoint::Model::pushbroom);
+  triangulation.setViewpoint (scan.viewpoint);
   pcl::ScanMesh delaunay;
   triangulation.triangulate (shuffled, delaunay);
 
   EXPECT_EQ (delaunay.cloud->size (), scan.finite_points);
   const double ratio = pcl::meshArea (delaunay) / pcl::meshArea (grid);
   std::cout << "Delaunay/grid area ratio: " << ratio << std::endl;
-  // The foundation issue asks for 2%; on bun000 the Delaunay path gives 1.11 (measured, not met).
-  // The retinal-plane Delaunay fills the scanner's shadow gaps that the grid leaves open, and
-  // Section 2's mean + 0.6 stddev rule prunes only the longest of those fills. The 2% holds where
-  // the scan has no gaps (HeightFieldDelaunayMatchesGridArea). This bound guards against regressions
-  // of the measured state: the Delaunay mesh covers the grid's surface and at most 12% more.
+  // The foundation issue asks for 2%; on bun000 the Delaunay path gives 1.097 (measured, not met;
+  // 1.11 projected along +z). The retinal-plane Delaunay fills the scanner's shadow gaps that the
+  // grid leaves open, and Section 2's mean + 0.6 stddev rule prunes only the longest of those fills.
+  // The 2% holds where the scan has no gaps (HeightFieldDelaunayMatchesGridArea). This bound guards
+  // against regressions of the measured state: the Delaunay mesh covers the grid's surface and at
+  // most 10% more.
   EXPECT_GE (ratio, 0.98);
-  EXPECT_LE (ratio, 1.12);
+  EXPECT_LE (ratio, 1.10);
 }
 
 TEST (RangeScanTriangulation, HeightFieldDelaunayMatchesGridArea)

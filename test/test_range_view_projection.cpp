@@ -64,7 +64,7 @@ TEST (RangeViewProjection, PerspectiveRangeDifference)
   pcl::ScanMesh mesh = tiltedPlane ();
   // A sensor 0.1 m above the plane's centre, looking down (its +z is the scan's -z).
   mesh.viewpoint.sensor_pose = Eigen::Translation3d (0.0, 0.0, 0.1) * Eigen::AngleAxisd (M_PI, Eigen::Vector3d::UnitX ());
-  mesh.viewpoint.orthographic = false;
+  mesh.viewpoint.model = pcl::ScanViewpoint::Model::perspective;
   const pcl::RangeViewProjection projection (mesh);
   const Eigen::Vector3d sensor (0.0, 0.0, 0.1);
   for (const Eigen::Vector3d& q : {Eigen::Vector3d (0.005, -0.003, 0.0), Eigen::Vector3d (-0.012, 0.009, 0.0)})
@@ -78,6 +78,30 @@ TEST (RangeViewProjection, PerspectiveRangeDifference)
       EXPECT_NEAR (s.distance, t, 2e-6);
     }
   }
+}
+
+// A pushbroom sensor: lines of sight fan out from a line along x and stay in their plane x = const.
+TEST (RangeViewProjection, PushbroomRangeDifference)
+{
+  pcl::ScanMesh mesh = tiltedPlane ();
+  const Eigen::Vector3d axis_point (0.0, 0.02, 0.1);
+  mesh.viewpoint = pcl::ScanViewpoint::pushbroom (axis_point, Eigen::Vector3d::UnitX (), Eigen::Vector3d::Zero ());
+  const pcl::RangeViewProjection projection (mesh);
+  for (const Eigen::Vector3d& q : {Eigen::Vector3d (0.005, -0.003, 0.0), Eigen::Vector3d (-0.012, 0.009, 0.0),
+                                   Eigen::Vector3d (0.017, 0.015, 0.0)})
+  {
+    const Eigen::Vector3d hit (q.x (), q.y (), 0.3 * q.x () + 0.1 * q.y ());
+    const Eigen::Vector3d ray = (hit - Eigen::Vector3d (hit.x (), axis_point.y (), axis_point.z ())).normalized ();
+    for (const double t : {-0.002, 0.001})
+    {
+      pcl::RangeViewProjection::Sample s;
+      ASSERT_TRUE (projection.sample ((hit - t * ray).cast<float> (), s));
+      EXPECT_NEAR (s.distance, t, 2e-6);
+    }
+  }
+  // Behind the sensor's axis nothing is seen.
+  pcl::RangeViewProjection::Sample s;
+  EXPECT_FALSE (projection.sample (Eigen::Vector3f (0.0f, 0.03f, 0.2f), s));
 }
 
 TEST (RangeViewProjection, BadArgumentsAreRefused)

@@ -48,7 +48,7 @@ namespace
     // The renderer's convention: the camera looks down its -z axis (RenderedView::viewpoint).
     pcl::ScanViewpoint viewpoint;
     viewpoint.sensor_pose = Eigen::AngleAxisd (M_PI, Eigen::Vector3d::UnitX ());
-    viewpoint.orthographic = camera.orthographic;
+    viewpoint.model = camera.orthographic ? pcl::ScanViewpoint::Model::orthographic : pcl::ScanViewpoint::Model::perspective;
     pcl::RangeScanTriangulation triangulation;
     triangulation.setViewpoint (viewpoint);
     auto mesh = std::make_shared<pcl::ScanMesh> ();

@@ -11,7 +11,7 @@ namespace pcl
     ScanViewpoint v;
     // Half a turn about x turns the sensor's +z (its line of sight) into the scan's -z.
     v.sensor_pose = Eigen::AngleAxisd (M_PI, Eigen::Vector3d::UnitX ());
-    v.orthographic = true;
+    v.model = Model::orthographic;
     return v;
   }
 
@@ -30,11 +30,39 @@ namespace pcl
     return v;
   }
 
+  ScanViewpoint
+  ScanViewpoint::pushbroom (const Eigen::Vector3d& axis_point, const Eigen::Vector3d& axis_direction,
+                            const Eigen::Vector3d& target)
+  {
+    const Eigen::Vector3d x = axis_direction.normalized ();
+    const Eigen::Vector3d offset = target - axis_point;
+    const Eigen::Vector3d z = (offset - offset.dot (x) * x).normalized ();
+    Eigen::Matrix3d r;
+    r << x, z.cross (x), z;
+    ScanViewpoint v;
+    // The origin is the axis point nearest the target, so that sensor coordinates stay small.
+    v.sensor_pose = Eigen::Translation3d (axis_point + offset.dot (x) * x) * r;
+    v.model = Model::pushbroom;
+    return v;
+  }
+
   Eigen::Vector3d
   ScanViewpoint::towardSensor (const Eigen::Vector3d& p) const
   {
-    if (orthographic)
-      return -sensor_pose.linear ().col (2);
+    switch (model)
+    {
+      case Model::orthographic:
+        return -sensor_pose.linear ().col (2);
+      case Model::pushbroom:
+      {
+        // Back to the axis within the point's own plane x = const.
+        Eigen::Vector3d s = sensor_pose.inverse () * p;
+        s.x () = 0.0;
+        return -(sensor_pose.linear () * s).normalized ();
+      }
+      case Model::perspective:
+        break;
+    }
     return (sensor_pose.translation () - p).normalized ();
   }
 
@@ -42,8 +70,15 @@ namespace pcl
   ScanViewpoint::project (const Eigen::Vector3d& p) const
   {
     const Eigen::Vector3d s = sensor_pose.inverse () * p;
-    if (orthographic)
-      return s.head<2> ();
+    switch (model)
+    {
+      case Model::orthographic:
+        return s.head<2> ();
+      case Model::pushbroom:
+        return Eigen::Vector2d (s.x (), s.y () / s.z ());
+      case Model::perspective:
+        break;
+    }
     return s.head<2> () / s.z ();
   }
 }

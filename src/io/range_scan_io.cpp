@@ -2,6 +2,7 @@
  * pcl_tensor: automatic pairwise registration of range images with tensors.
  */
 #include <pcl/io/range_scan_io.h>
+#include <pcl/common/grid_sensor_fit.h>
 #include <pcl/io/range_pcd.h>
 #include <pcl/io/range_ply.h>
 #include "file_input.h"
@@ -58,7 +59,13 @@ namespace pcl
       RangeScan scan;
       const std::string ext = extensionOf (path);
       if (ext == "ply")  // not pcl::PLYReader: slower on ASCII, and it aborts on odd headers (see readRangePLY)
+      {
         readRangePLY (path, *scan.cloud);
+        // A PLY carries no sensor pose, but a scanner's grid shows where its lines of sight ran.
+        const GridSensorFit fit = fitPushbroomSensor (*scan.cloud);
+        if (fit.found)
+          scan.viewpoint = fit.viewpoint;
+      }
       else if (ext == "pcd")
       {
         // Not pcl::PCDReader: it trusts its header (see readRangePCD).

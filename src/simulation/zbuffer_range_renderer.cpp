@@ -179,7 +179,7 @@ namespace pcl
     RenderedView view;
     view.pose = sensor_pose;
     view.viewpoint.sensor_pose = Eigen::AngleAxisd (M_PI, Eigen::Vector3d::UnitX ());
-    view.viewpoint.orthographic = params_.orthographic;
+    view.viewpoint.model = params_.orthographic ? ScanViewpoint::Model::orthographic : ScanViewpoint::Model::perspective;
     auto& cloud = *view.cloud;
     cloud.resize (static_cast<std::size_t> (w) * h);
     cloud.width = static_cast<std::uint32_t> (w);

@@ -65,17 +65,16 @@ namespace pcl
     /** Curless & Levoy's per-vertex weight: cosine between the vertex normal and its line of sight,
       * times a ramp from 0 on the border to 1 at \a ramp_edges hops inside. Face normals are turned
       * toward the sensor before averaging, so the triangles' winding does not matter. */
-    std::vector<float>
+    template <typename TowardSensor> std::vector<float>
     vertexWeights (const std::vector<Eigen::Vector3f>& s, const std::vector<pcl::Vertices>& polygons,
-                   bool orthographic, double ramp_edges)
+                   const TowardSensor& toward_sensor, double ramp_edges)
     {
       std::vector<Eigen::Vector3f> normals (s.size (), Eigen::Vector3f::Zero ());
       for (const auto& poly : polygons)
       {
         const Eigen::Vector3f& a = s[poly.vertices[0]];
         Eigen::Vector3f n = (s[poly.vertices[1]] - a).cross (s[poly.vertices[2]] - a);  // |n| = 2 area
-        const Eigen::Vector3f toward = orthographic ? Eigen::Vector3f (-Eigen::Vector3f::UnitZ ()) : Eigen::Vector3f (-a);
-        if (n.dot (toward) < 0.0f)
+        if (n.dot (toward_sensor (a)) < 0.0f)
           n = -n;
         for (int k = 0; k < 3; ++k)
           normals[poly.vertices[k]] += n;
@@ -87,7 +86,7 @@ namespace pcl
         const float n = normals[i].norm ();
         if (!(n > 0.0f))
           continue;
-        const Eigen::Vector3f toward = orthographic ? Eigen::Vector3f (-Eigen::Vector3f::UnitZ ()) : Eigen::Vector3f (-s[i].normalized ());
+        const Eigen::Vector3f toward = toward_sensor (s[i]).normalized ();
         const double ramp = std::min (1.0, static_cast<double> (hops[i]) / ramp_edges);
         weights[i] = static_cast<float> (std::max (0.0f, normals[i].dot (toward) / n) * ramp);
       }
@@ -101,35 +100,44 @@ namespace pcl
     if (!(border_ramp_edges > 0.0) || !(pixels_per_resolution > 0.0) || max_pixels == 0)
       PCL_TENSOR_THROW (pcl::BadArgumentException, "border ramp (" << border_ramp_edges << " edges), pixel density ("
                         << pixels_per_resolution << " per d_res) and pixel limit must be positive");
-    orthographic_ = mesh.viewpoint.orthographic;
+    model_ = mesh.viewpoint.model;
     scan_to_sensor_ = mesh.viewpoint.sensor_pose.inverse ().cast<float> ();
 
     std::vector<Eigen::Vector3f> s (mesh.cloud->size ());
     for (std::size_t i = 0; i < s.size (); ++i)
       s[i] = scan_to_sensor_ * (*mesh.cloud)[i].getVector3fMap ();
 
-    // The image covers the projections of the vertices a triangle uses (in front of a perspective sensor).
-    float umin = std::numeric_limits<float>::max (), vmin = umin, umax = -umin, vmax = -umin;
+    // Depths of the vertices that triangles use, in front of a perspective or pushbroom sensor.
     std::vector<float> depths;
     for (const auto& poly : mesh.polygons)
       for (const auto idx : poly.vertices)
+        if (model_ == ScanViewpoint::Model::orthographic || s[idx].z () > 0.0f)
+          depths.push_back (s[idx].z ());
+    if (depths.empty ())
+      PCL_TENSOR_THROW (InvalidScanException, "range view has no triangle in front of its sensor");
+    std::nth_element (depths.begin (), depths.begin () + depths.size () / 2, depths.end ());
+    const float median_depth = depths[depths.size () / 2];
+    // A pushbroom's y/z is scaled to a length at the median depth, so that square pixels suit it.
+    depth_scale_ = model_ == ScanViewpoint::Model::pushbroom ? median_depth : 1.0f;
+
+    // The image covers the projections of the vertices a triangle uses.
+    float umin = std::numeric_limits<float>::max (), vmin = umin, umax = -umin, vmax = -umin;
+    for (const auto& poly : mesh.polygons)
+      for (const auto idx : poly.vertices)
       {
-        const Eigen::Vector3f& p = s[idx];
-        if (!orthographic_ && !(p.z () > 0.0f))
+        float u, v;
+        if (!retinal (s[idx], u, v))
           continue;
-        const float u = orthographic_ ? p.x () : p.x () / p.z (), v = orthographic_ ? p.y () : p.y () / p.z ();
         umin = std::min (umin, u), umax = std::max (umax, u);
         vmin = std::min (vmin, v), vmax = std::max (vmax, v);
-        depths.push_back (p.z ());
       }
-    if (depths.empty () || !(umax >= umin) || !(vmax >= vmin))
+    if (!(umax >= umin) || !(vmax >= vmin))
       PCL_TENSOR_THROW (InvalidScanException, "range view has no triangle in front of its sensor");
 
-    // d_res on the retinal plane: metres for an orthographic sensor, d_res / median depth for a perspective one.
-    std::nth_element (depths.begin (), depths.begin () + depths.size () / 2, depths.end ());
+    // d_res on the retinal plane: a length, except for a perspective sensor's d_res / median depth.
     if (!(resolution > 0.0))
       resolution = meshResolution (mesh);
-    double pixel = resolution / pixels_per_resolution / (orthographic_ ? 1.0 : depths[depths.size () / 2]);
+    double pixel = resolution / pixels_per_resolution / (model_ == ScanViewpoint::Model::perspective ? median_depth : 1.0);
     if (!(pixel > 0.0))
       PCL_TENSOR_THROW (InvalidScanException, "range view has no extent (d_res " << resolution << ")");
     const double cells = ((umax - umin) / pixel + 2.0) * ((vmax - vmin) / pixel + 2.0);
@@ -141,7 +149,11 @@ namespace pcl
     width_ = static_cast<int> ((umax - u0_) * inv_pixel_) + 2;
     height_ = static_cast<int> ((vmax - v0_) * inv_pixel_) + 2;
 
-    rasterize (s, vertexWeights (s, mesh.polygons, orthographic_, border_ramp_edges), mesh.polygons);
+    const auto toward_sensor = [this] (const Eigen::Vector3f& p) {
+      float u, v;
+      return retinal (p, u, v) ? Eigen::Vector3f (-rayDirection (u, v)) : Eigen::Vector3f (-Eigen::Vector3f::UnitZ ());
+    };
+    rasterize (s, vertexWeights (s, mesh.polygons, toward_sensor, border_ramp_edges), mesh.polygons);
     buildTiles ();
   }
 
@@ -156,15 +168,13 @@ namespace pcl
     const double pixel = 1.0 / inv_pixel_;
     for (const auto& poly : polygons)
     {
-      double u[3], v[3], g[3], w[3];
+      double u[3], v[3], w[3];
       bool valid = true;
       for (int k = 0; k < 3; ++k)
       {
-        const Eigen::Vector3f& p = s[poly.vertices[k]];
-        valid = valid && (orthographic_ || p.z () > 0.0f);
-        u[k] = orthographic_ ? p.x () : p.x () / static_cast<double> (p.z ());
-        v[k] = orthographic_ ? p.y () : p.y () / static_cast<double> (p.z ());
-        g[k] = orthographic_ ? p.z () : 1.0 / static_cast<double> (p.z ());
+        float uk = 0.0f, vk = 0.0f;
+        valid = valid && retinal (s[poly.vertices[k]], uk, vk);
+        u[k] = uk, v[k] = vk;
         w[k] = weights[poly.vertices[k]];
       }
       const double eu1 = u[1] - u[0], ev1 = v[1] - v[0], eu2 = u[2] - u[0], ev2 = v[2] - v[0];
@@ -172,18 +182,17 @@ namespace pcl
       // Edge-on triangles cover no pixel centre reliably and their plane is ill-defined.
       if (!valid || !(std::abs (det) > 1e-6 * pixel * pixel))
         continue;
-      // Affine functions through the three corners, relative to corner 0 for float precision.
-      auto slopes = [&] (const double* f, float& fu, float& fv) {
-        fu = static_cast<float> (((f[1] - f[0]) * ev2 - (f[2] - f[0]) * ev1) / det);
-        fv = static_cast<float> ((eu1 * (f[2] - f[0]) - eu2 * (f[1] - f[0])) / det);
-      };
+      const Eigen::Vector3f& corner = s[poly.vertices[0]];
+      const Eigen::Vector3d normal = (s[poly.vertices[1]] - corner).cast<double> ().cross ((s[poly.vertices[2]] - corner).cast<double> ());
+      // The weight is affine in (u, v), relative to corner 0 for float precision.
       Plane plane;
       plane.u = static_cast<float> (u[0]);
       plane.v = static_cast<float> (v[0]);
-      plane.d0 = static_cast<float> (g[0]);
+      plane.corner = corner;
+      plane.normal = normal.normalized ().cast<float> ();
       plane.w0 = static_cast<float> (w[0]);
-      slopes (g, plane.du, plane.dv);
-      slopes (w, plane.wu, plane.wv);
+      plane.wu = static_cast<float> (((w[1] - w[0]) * ev2 - (w[2] - w[0]) * ev1) / det);
+      plane.wv = static_cast<float> ((eu1 * (w[2] - w[0]) - eu2 * (w[1] - w[0])) / det);
       const std::int32_t id = static_cast<std::int32_t> (planes_.size ());
       planes_.push_back (plane);
 
@@ -205,8 +214,7 @@ namespace pcl
           const double b1 = (pu * ev2 - eu2 * pv) / det, b2 = (eu1 * pv - pu * ev1) / det;
           if (b1 < eps || b2 < eps || 1.0 - b1 - b2 < eps)
             continue;
-          const double gp = g[0] + b1 * (g[1] - g[0]) + b2 * (g[2] - g[0]);
-          const float z = static_cast<float> (orthographic_ ? gp : 1.0 / gp);
+          const float z = surfaceDepth (plane, static_cast<float> (u0_ + (c + 0.5) * pixel), static_cast<float> (v0_ + (r + 0.5) * pixel));
           const std::size_t cell = static_cast<std::size_t> (r) * width_ + c;
           if (z < zbuf[cell])
           {
@@ -256,11 +264,59 @@ namespace pcl
     return true;
   }
 
+  bool
+  RangeViewProjection::retinal (const Eigen::Vector3f& s, float& u, float& v) const
+  {
+    switch (model_)
+    {
+      case ScanViewpoint::Model::orthographic:
+        u = s.x (), v = s.y ();
+        return true;
+      case ScanViewpoint::Model::pushbroom:
+        u = s.x (), v = depth_scale_ * s.y () / s.z ();
+        return s.z () > 0.0f;
+      case ScanViewpoint::Model::perspective:
+        break;
+    }
+    u = s.x () / s.z (), v = s.y () / s.z ();
+    return s.z () > 0.0f;
+  }
+
+  Eigen::Vector3f
+  RangeViewProjection::rayOrigin (float u, float v) const
+  {
+    switch (model_)
+    {
+      case ScanViewpoint::Model::orthographic:
+        return Eigen::Vector3f (u, v, 0.0f);
+      case ScanViewpoint::Model::pushbroom:
+        return Eigen::Vector3f (u, 0.0f, 0.0f);
+      case ScanViewpoint::Model::perspective:
+        break;
+    }
+    return Eigen::Vector3f::Zero ();
+  }
+
+  Eigen::Vector3f
+  RangeViewProjection::rayDirection (float u, float v) const
+  {
+    switch (model_)
+    {
+      case ScanViewpoint::Model::orthographic:
+        return Eigen::Vector3f::UnitZ ();
+      case ScanViewpoint::Model::pushbroom:
+        return Eigen::Vector3f (0.0f, v / depth_scale_, 1.0f);
+      case ScanViewpoint::Model::perspective:
+        break;
+    }
+    return Eigen::Vector3f (u, v, 1.0f);
+  }
+
   float
   RangeViewProjection::surfaceDepth (const Plane& plane, float u, float v) const
   {
-    const float g = plane.d0 + plane.du * (u - plane.u) + plane.dv * (v - plane.v);
-    return orthographic_ ? g : 1.0f / g;
+    // The line of sight o + t r meets the plane at t = n.(corner - o) / n.r, and r.z = 1 makes t the depth.
+    return plane.normal.dot (plane.corner - rayOrigin (u, v)) / plane.normal.dot (rayDirection (u, v));
   }
 
   bool
@@ -272,21 +328,20 @@ namespace pcl
   bool
   RangeViewProjection::sampleSensor (const Eigen::Vector3f& s, Sample& out) const
   {
-    if (!orthographic_ && !(s.z () > 0.0f))
-      return false;
-    const float u = orthographic_ ? s.x () : s.x () / s.z (), v = orthographic_ ? s.y () : s.y () / s.z ();
+    float u, v;
     int col, row;
-    if (!pixelOf (u, v, col, row))
+    if (!retinal (s, u, v) || !pixelOf (u, v, col, row))
       return false;
     const std::int32_t id = triangle_[static_cast<std::size_t> (row) * width_ + col];
     if (id < 0)
       return false;
     const Plane& plane = planes_[id];
     const float z = surfaceDepth (plane, u, v);
-    if (!(z > 0.0f) && !orthographic_)
+    if (!std::isfinite (z) || (!(z > 0.0f) && model_ != ScanViewpoint::Model::orthographic))
       return false;
-    // Along a perspective line of sight, range = depth * |s| / s.z.
-    out.distance = orthographic_ ? z - s.z () : (z - s.z ()) * s.norm () / s.z ();
+    // Moving the depth by dz moves along the line of sight by dz |r|, since r.z = 1.
+    const float along = model_ == ScanViewpoint::Model::orthographic ? 1.0f : rayDirection (u, v).norm ();
+    out.distance = (z - s.z ()) * along;
     out.weight = std::min (1.0f, std::max (0.0f, plane.w0 + plane.wu * (u - plane.u) + plane.wv * (v - plane.v)));
     return true;
   }
@@ -296,14 +351,16 @@ namespace pcl
                                    float& max_depth) const
   {
     int c0 = 0, c1 = tiles_x_ - 1, r0 = 0, r1 = tiles_y_ - 1;
-    // A box reaching behind a perspective sensor projects unboundedly: answer for the whole image.
-    if (orthographic_ || lo.z () > 0.0f)
+    // A box reaching behind a perspective or pushbroom sensor projects unboundedly: answer for the whole image.
+    if (model_ == ScanViewpoint::Model::orthographic || lo.z () > 0.0f)
     {
+      // u and v are monotonic in each coordinate over such a box, so its corners bound its projection.
       float umin = std::numeric_limits<float>::max (), vmin = umin, umax = -umin, vmax = -umin;
       for (int k = 0; k < 8; ++k)
       {
         const Eigen::Vector3f p ((k & 1) ? hi.x () : lo.x (), (k & 2) ? hi.y () : lo.y (), (k & 4) ? hi.z () : lo.z ());
-        const float u = orthographic_ ? p.x () : p.x () / p.z (), v = orthographic_ ? p.y () : p.y () / p.z ();
+        float u, v;
+        retinal (p, u, v);
         umin = std::min (umin, u), umax = std::max (umax, u);
         vmin = std::min (vmin, v), vmax = std::max (vmax, v);
       }

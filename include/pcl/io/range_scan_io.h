@@ -21,7 +21,9 @@ namespace pcl
         * is_dense is set from the data, never trusted from the reader.
         */
       pcl::PointCloud<pcl::PointXYZ>::Ptr cloud{new pcl::PointCloud<pcl::PointXYZ>};
-      /** \brief The sensor: from the file's sensor origin/orientation (PCD), else +z orthographic. */
+      /** \brief The sensor: from the file's sensor origin/orientation (PCD); for a PLY grid that a
+        * pushbroom explains (the raw Stanford scans; fitPushbroomSensor), that pushbroom; else +z
+        * orthographic. */
       ScanViewpoint viewpoint = ScanViewpoint::fromPositiveZ ();
       /** \brief Number of finite points. */
       std::size_t finite_points = 0;

@@ -19,7 +19,9 @@ namespace pcl
     * Every pixel keeps the nearest triangle whose projection covers its centre. A query point is
     * projected to its pixel and the line of sight through the point itself (not the pixel centre) is
     * intersected with that triangle's plane, so the answer is exact on the triangle and does not
-    * depend on the pixel size, which only decides which triangle answers.
+    * depend on the pixel size, which only decides which triangle answers. Perspective, orthographic and
+    * pushbroom sensors (ScanViewpoint::Model) are all answered this way; a pushbroom's retinal image
+    * bends straight edges slightly, which again only moves which triangle answers near an edge.
     *
     * Weights follow Curless & Levoy: each vertex is weighted by the cosine between its normal
     * (area-weighted face normals, computed from the geometry) and its line of sight, times a ramp
@@ -81,23 +83,33 @@ namespace pcl
       std::size_t memoryBytes () const;
 
     private:
-      /** A triangle as affine functions of the retinal coordinates (u, v): the depth term (z for an
-        * orthographic sensor, 1/z for a perspective one, both affine in (u, v) on a plane) and the weight. */
+      /** A triangle: its plane in the sensor frame, which every line of sight meets exactly, and its
+        * weight as an affine function of the retinal coordinates (u, v). */
       struct Plane
       {
-        float u, v;        ///< retinal coordinates of the triangle's first corner
-        float d0, du, dv;  ///< depth term there, and its slopes
-        float w0, wu, wv;  ///< weight there, and its slopes
+        float u, v;              ///< retinal coordinates of the triangle's first corner
+        Eigen::Vector3f corner;  ///< the first corner (sensor frame)
+        Eigen::Vector3f normal;  ///< unit normal (sensor frame)
+        float w0, wu, wv;        ///< weight at the first corner, and its slopes
       };
 
       void rasterize (const std::vector<Eigen::Vector3f>& sensor_points, const std::vector<float>& weights,
                       const std::vector<pcl::Vertices>& polygons);
       void buildTiles ();
       bool pixelOf (float u, float v, int& col, int& row) const;
+      /** Retinal coordinates of a sensor-frame point; false behind a perspective or pushbroom sensor. */
+      bool retinal (const Eigen::Vector3f& s, float& u, float& v) const;
+      /** The line of sight through (u, v) is rayOrigin + t rayDirection, with origin z = 0 and direction
+        * z = 1, so that t is the depth (sensor z) of the point it reaches. */
+      Eigen::Vector3f rayOrigin (float u, float v) const;
+      Eigen::Vector3f rayDirection (float u, float v) const;
+      /** Depth (sensor z) at which the line of sight through (u, v) meets the triangle's plane. */
       float surfaceDepth (const Plane& plane, float u, float v) const;
 
       Eigen::Affine3f scan_to_sensor_ = Eigen::Affine3f::Identity ();
-      bool orthographic_ = false;
+      ScanViewpoint::Model model_ = ScanViewpoint::Model::perspective;
+      /** Pushbroom: the depth at which v = y / z is scaled to a length (see retinal()). */
+      float depth_scale_ = 1.0f;
       float u0_ = 0.0f, v0_ = 0.0f, inv_pixel_ = 1.0f;
       int width_ = 0, height_ = 0;
       std::vector<std::int32_t> triangle_;  ///< per pixel, row-major: index into planes_, or -1
