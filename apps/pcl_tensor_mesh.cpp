@@ -29,7 +29,7 @@ namespace
     print_info ("  --edge-std K         prune triangles with an edge over mean + K stddev (default "); print_value ("%g", d.edge_std_devs); print_info (")\n");
     print_info ("  --normals fine|face  normal approach (b) or (a) of Section 2 (default "); print_value ("fine"); print_info (")\n");
     print_info ("  --normal-radius R    radius of approach (b), in d_res (default "); print_value ("%g", d.normal_radius_resolutions); print_info (")\n");
-    print_info ("  --viewpoint x,y,z    perspective sensor at x,y,z looking at the scan (default: the file's pose; +z for PLY)\n");
+    print_info ("  --viewpoint x,y,z    perspective sensor at x,y,z looking at the scan (default: a PCD's pose; the pushbroom a PLY grid fits; else +z)\n");
     print_info ("Exit codes: 0 done, 2 bad input or usage.\n");
   }
 

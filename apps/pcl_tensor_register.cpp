@@ -42,7 +42,7 @@ namespace
     print_info ("  --count both|scene views whose correspondences verification counts (default %s)\n",
                 d.verification.count_both_views ? "both" : "scene");
     print_info ("  --dims X,Y,Z       object dimensions D (default: from the two views, Eq. 1)\n");
-    print_info ("  --viewpoint x,y,z  perspective sensor at x,y,z looking at each scan (default: file pose; +z for PLY)\n");
+    print_info ("  --viewpoint x,y,z  perspective sensor at x,y,z looking at each scan (default: a PCD's pose; the pushbroom a PLY grid fits; else +z)\n");
     print_info ("Exit codes: 0 registered, 3 not registered (no hypothesis passed verification), 2 bad input or usage.\n");
   }
 
