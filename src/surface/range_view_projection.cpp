@@ -17,6 +17,28 @@ namespace pcl
     /** Pixels per side of a depth-range tile. */
     constexpr int kTile = 8;
 
+    /** Retinal coordinates of a sensor-frame point: (x, y) orthographic, (x, depth_scale y / z) pushbroom,
+      * (x / z, y / z) perspective; false behind a perspective or pushbroom sensor. */
+    template <ScanViewpoint::Model M> inline bool
+    retinalAs (const Eigen::Vector3f& s, float depth_scale, float& u, float& v)
+    {
+      if constexpr (M == ScanViewpoint::Model::orthographic)
+      {
+        u = s.x (), v = s.y ();
+        return true;
+      }
+      else if constexpr (M == ScanViewpoint::Model::pushbroom)
+      {
+        u = s.x (), v = depth_scale * s.y () / s.z ();
+        return s.z () > 0.0f;
+      }
+      else
+      {
+        u = s.x () / s.z (), v = s.y () / s.z ();
+        return s.z () > 0.0f;
+      }
+    }
+
     /** Hop count from each vertex to the nearest vertex on a border edge (an edge of one triangle);
       * vertices that no border reaches get the largest int. */
     std::vector<int>
@@ -149,9 +171,18 @@ namespace pcl
     width_ = static_cast<int> ((umax - u0_) * inv_pixel_) + 2;
     height_ = static_cast<int> ((vmax - v0_) * inv_pixel_) + 2;
 
-    const auto toward_sensor = [this] (const Eigen::Vector3f& p) {
-      float u, v;
-      return retinal (p, u, v) ? Eigen::Vector3f (-rayDirection (u, v)) : Eigen::Vector3f (-Eigen::Vector3f::UnitZ ());
+    // Back along the line of sight: the sensor frame's -z, the point itself, or its part across the sweep.
+    const auto toward_sensor = [this] (const Eigen::Vector3f& p) -> Eigen::Vector3f {
+      switch (model_)
+      {
+        case ScanViewpoint::Model::orthographic:
+          return -Eigen::Vector3f::UnitZ ();
+        case ScanViewpoint::Model::pushbroom:
+          return Eigen::Vector3f (0.0f, -p.y (), -p.z ());
+        case ScanViewpoint::Model::perspective:
+          break;
+      }
+      return -p;
     };
     rasterize (s, vertexWeights (s, mesh.polygons, toward_sensor, border_ramp_edges), mesh.polygons);
     buildTiles ();
@@ -182,14 +213,11 @@ namespace pcl
       // Edge-on triangles cover no pixel centre reliably and their plane is ill-defined.
       if (!valid || !(std::abs (det) > 1e-6 * pixel * pixel))
         continue;
-      const Eigen::Vector3f& corner = s[poly.vertices[0]];
-      const Eigen::Vector3d normal = (s[poly.vertices[1]] - corner).cast<double> ().cross ((s[poly.vertices[2]] - corner).cast<double> ());
-      // The weight is affine in (u, v), relative to corner 0 for float precision.
       Plane plane;
       plane.u = static_cast<float> (u[0]);
       plane.v = static_cast<float> (v[0]);
-      plane.corner = corner;
-      plane.normal = normal.normalized ().cast<float> ();
+      setDepthTerms (s[poly.vertices[0]], s[poly.vertices[1]], s[poly.vertices[2]], plane);
+      // The weight is affine in (u, v), relative to corner 0 for float precision.
       plane.w0 = static_cast<float> (w[0]);
       plane.wu = static_cast<float> (((w[1] - w[0]) * ev2 - (w[2] - w[0]) * ev1) / det);
       plane.wv = static_cast<float> ((eu1 * (w[2] - w[0]) - eu2 * (w[1] - w[0])) / det);
@@ -270,53 +298,92 @@ namespace pcl
     switch (model_)
     {
       case ScanViewpoint::Model::orthographic:
-        u = s.x (), v = s.y ();
-        return true;
+        return retinalAs<ScanViewpoint::Model::orthographic> (s, depth_scale_, u, v);
       case ScanViewpoint::Model::pushbroom:
-        u = s.x (), v = depth_scale_ * s.y () / s.z ();
-        return s.z () > 0.0f;
+        return retinalAs<ScanViewpoint::Model::pushbroom> (s, depth_scale_, u, v);
       case ScanViewpoint::Model::perspective:
         break;
     }
-    u = s.x () / s.z (), v = s.y () / s.z ();
-    return s.z () > 0.0f;
+    return retinalAs<ScanViewpoint::Model::perspective> (s, depth_scale_, u, v);
   }
 
-  Eigen::Vector3f
-  RangeViewProjection::rayOrigin (float u, float v) const
+  void
+  RangeViewProjection::rayCoefficients (Eigen::Matrix3d& origin, Eigen::Matrix3d& direction) const
   {
+    // Columns: the constant term and the slopes in u and v.
+    origin.setZero ();
+    direction.setZero ();
+    direction (2, 0) = 1.0;
     switch (model_)
     {
       case ScanViewpoint::Model::orthographic:
-        return Eigen::Vector3f (u, v, 0.0f);
+        origin (0, 1) = origin (1, 2) = 1.0;
+        return;
       case ScanViewpoint::Model::pushbroom:
-        return Eigen::Vector3f (u, 0.0f, 0.0f);
+        origin (0, 1) = 1.0;
+        direction (1, 2) = 1.0 / depth_scale_;
+        return;
       case ScanViewpoint::Model::perspective:
         break;
     }
-    return Eigen::Vector3f::Zero ();
+    direction (0, 1) = direction (1, 2) = 1.0;
   }
 
-  Eigen::Vector3f
-  RangeViewProjection::rayDirection (float u, float v) const
+  void
+  RangeViewProjection::setDepthTerms (const Eigen::Vector3f& a, const Eigen::Vector3f& b, const Eigen::Vector3f& c,
+                                      Plane& plane) const
   {
+    // The line of sight o + t r meets the plane n.(x - a) = 0 at t = n.(a - o) / n.r, and r.z = 1 makes
+    // t the depth. o and r are affine in (u, v), so t is a ratio of two affine functions of (u, v);
+    // both are written about the first corner's (u, v) for float precision.
+    const Eigen::Vector3d corner = a.cast<double> ();
+    const Eigen::Vector3d n = (b - a).cast<double> ().cross ((c - a).cast<double> ()).normalized ();
+    Eigen::Matrix3d origin, direction;
+    rayCoefficients (origin, direction);
+    const Eigen::Vector3d at (1.0, plane.u, plane.v);
+    const double a0 = n.dot (corner - origin * at), au = -n.dot (origin.col (1)), av = -n.dot (origin.col (2));
+    const double b0 = n.dot (direction * at), bu = n.dot (direction.col (1)), bv = n.dot (direction.col (2));
+    // Each model keeps only the terms that vary: an orthographic depth is affine (b = 1), a perspective
+    // one's inverse is (a constant), and a pushbroom's numerator varies in u only, its denominator in v.
     switch (model_)
     {
       case ScanViewpoint::Model::orthographic:
-        return Eigen::Vector3f::UnitZ ();
+        plane.d0 = static_cast<float> (a0 / b0), plane.du = static_cast<float> (au / b0), plane.dv = static_cast<float> (av / b0);
+        return;
       case ScanViewpoint::Model::pushbroom:
-        return Eigen::Vector3f (0.0f, v / depth_scale_, 1.0f);
+        plane.d0 = static_cast<float> (a0), plane.du = static_cast<float> (au);
+        plane.e0 = static_cast<float> (b0), plane.dv = static_cast<float> (bv);
+        return;
       case ScanViewpoint::Model::perspective:
         break;
     }
-    return Eigen::Vector3f (u, v, 1.0f);
+    plane.d0 = static_cast<float> (b0 / a0), plane.du = static_cast<float> (bu / a0), plane.dv = static_cast<float> (bv / a0);
   }
 
   float
   RangeViewProjection::surfaceDepth (const Plane& plane, float u, float v) const
   {
-    // The line of sight o + t r meets the plane at t = n.(corner - o) / n.r, and r.z = 1 makes t the depth.
-    return plane.normal.dot (plane.corner - rayOrigin (u, v)) / plane.normal.dot (rayDirection (u, v));
+    switch (model_)
+    {
+      case ScanViewpoint::Model::orthographic:
+        return depthAs<ScanViewpoint::Model::orthographic> (plane, u - plane.u, v - plane.v);
+      case ScanViewpoint::Model::pushbroom:
+        return depthAs<ScanViewpoint::Model::pushbroom> (plane, u - plane.u, v - plane.v);
+      case ScanViewpoint::Model::perspective:
+        break;
+    }
+    return depthAs<ScanViewpoint::Model::perspective> (plane, u - plane.u, v - plane.v);
+  }
+
+  template <ScanViewpoint::Model M> float
+  RangeViewProjection::depthAs (const Plane& plane, float du, float dv)
+  {
+    if constexpr (M == ScanViewpoint::Model::orthographic)
+      return plane.d0 + plane.du * du + plane.dv * dv;
+    else if constexpr (M == ScanViewpoint::Model::pushbroom)
+      return (plane.d0 + plane.du * du) / (plane.e0 + plane.dv * dv);
+    else
+      return 1.0f / (plane.d0 + plane.du * du + plane.dv * dv);
   }
 
   bool
@@ -328,21 +395,44 @@ namespace pcl
   bool
   RangeViewProjection::sampleSensor (const Eigen::Vector3f& s, Sample& out) const
   {
+    // One dispatch per sample: integration samples millions of voxels per view.
+    switch (model_)
+    {
+      case ScanViewpoint::Model::orthographic:
+        return sampleAs<ScanViewpoint::Model::orthographic> (s, out);
+      case ScanViewpoint::Model::pushbroom:
+        return sampleAs<ScanViewpoint::Model::pushbroom> (s, out);
+      case ScanViewpoint::Model::perspective:
+        break;
+    }
+    return sampleAs<ScanViewpoint::Model::perspective> (s, out);
+  }
+
+  template <ScanViewpoint::Model M> bool
+  RangeViewProjection::sampleAs (const Eigen::Vector3f& s, Sample& out) const
+  {
     float u, v;
     int col, row;
-    if (!retinal (s, u, v) || !pixelOf (u, v, col, row))
+    if (!retinalAs<M> (s, depth_scale_, u, v) || !pixelOf (u, v, col, row))
       return false;
     const std::int32_t id = triangle_[static_cast<std::size_t> (row) * width_ + col];
     if (id < 0)
       return false;
     const Plane& plane = planes_[id];
-    const float z = surfaceDepth (plane, u, v);
-    if (!std::isfinite (z) || (!(z > 0.0f) && model_ != ScanViewpoint::Model::orthographic))
-      return false;
-    // Moving the depth by dz moves along the line of sight by dz |r|, since r.z = 1.
-    const float along = model_ == ScanViewpoint::Model::orthographic ? 1.0f : rayDirection (u, v).norm ();
-    out.distance = (z - s.z ()) * along;
-    out.weight = std::min (1.0f, std::max (0.0f, plane.w0 + plane.wu * (u - plane.u) + plane.wv * (v - plane.v)));
+    const float du = u - plane.u, dv = v - plane.v;
+    // Moving the depth by dz moves along the line of sight by dz |r| (r.z = 1): the range from the
+    // line's origin over the depth.
+    const float z = depthAs<M> (plane, du, dv);
+    if constexpr (M == ScanViewpoint::Model::orthographic)
+      out.distance = z - s.z ();
+    else
+    {
+      if (!(z > 0.0f) || !std::isfinite (z))
+        return false;
+      const float range = M == ScanViewpoint::Model::perspective ? s.norm () : s.tail<2> ().norm ();
+      out.distance = (z - s.z ()) * range / s.z ();
+    }
+    out.weight = std::min (1.0f, std::max (0.0f, plane.w0 + plane.wu * du + plane.wv * dv));
     return true;
   }
 

@@ -83,14 +83,14 @@ namespace pcl
       std::size_t memoryBytes () const;
 
     private:
-      /** A triangle: its plane in the sensor frame, which every line of sight meets exactly, and its
-        * weight as an affine function of the retinal coordinates (u, v). */
+      /** A triangle: the depth at which each line of sight meets its plane, exactly, from terms affine
+        * in the retinal offsets (du, dv) from the first corner (setDepthTerms, depthAs), and its weight
+        * as an affine function of them. */
       struct Plane
       {
-        float u, v;              ///< retinal coordinates of the triangle's first corner
-        Eigen::Vector3f corner;  ///< the first corner (sensor frame)
-        Eigen::Vector3f normal;  ///< unit normal (sensor frame)
-        float w0, wu, wv;        ///< weight at the first corner, and its slopes
+        float u, v;            ///< retinal coordinates of the triangle's first corner
+        float d0, du, dv, e0;  ///< depth terms (e0: a pushbroom's denominator there)
+        float w0, wu, wv;      ///< weight there, and its slopes
       };
 
       void rasterize (const std::vector<Eigen::Vector3f>& sensor_points, const std::vector<float>& weights,
@@ -99,10 +99,15 @@ namespace pcl
       bool pixelOf (float u, float v, int& col, int& row) const;
       /** Retinal coordinates of a sensor-frame point; false behind a perspective or pushbroom sensor. */
       bool retinal (const Eigen::Vector3f& s, float& u, float& v) const;
-      /** The line of sight through (u, v) is rayOrigin + t rayDirection, with origin z = 0 and direction
-        * z = 1, so that t is the depth (sensor z) of the point it reaches. */
-      Eigen::Vector3f rayOrigin (float u, float v) const;
-      Eigen::Vector3f rayDirection (float u, float v) const;
+      /** The line of sight through (u, v) is o + t r with o = origin (1, u, v)^T and r = direction (1, u, v)^T,
+        * o.z = 0 and r.z = 1, so that t is the depth (sensor z) of the point it reaches. */
+      void rayCoefficients (Eigen::Matrix3d& origin, Eigen::Matrix3d& direction) const;
+      /** The depth terms of the triangle (a, b, c) (sensor frame) about plane.u, plane.v. */
+      void setDepthTerms (const Eigen::Vector3f& a, const Eigen::Vector3f& b, const Eigen::Vector3f& c, Plane& plane) const;
+      /** The depth of \a plane at retinal offsets (du, dv) from its first corner, for one sensor model. */
+      template <ScanViewpoint::Model M> static float depthAs (const Plane& plane, float du, float dv);
+      /** sampleSensor() for one sensor model. */
+      template <ScanViewpoint::Model M> bool sampleAs (const Eigen::Vector3f& s, Sample& sample) const;
       /** Depth (sensor z) at which the line of sight through (u, v) meets the triangle's plane. */
       float surfaceDepth (const Plane& plane, float u, float v) const;
 
