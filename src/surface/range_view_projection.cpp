@@ -8,6 +8,7 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <type_traits>
 #include <unordered_map>
 
 namespace pcl
@@ -16,6 +17,23 @@ namespace pcl
   {
     /** Pixels per side of a depth-range tile. */
     constexpr int kTile = 8;
+
+    /** Calls \a f with the sensor model as a compile-time constant: one dispatch, then code for that model. */
+    template <typename F> decltype (auto)
+    withModel (ScanViewpoint::Model model, F&& f)
+    {
+      using Model = ScanViewpoint::Model;
+      switch (model)
+      {
+        case Model::orthographic:
+          return f (std::integral_constant<Model, Model::orthographic> ());
+        case Model::pushbroom:
+          return f (std::integral_constant<Model, Model::pushbroom> ());
+        case Model::perspective:
+          break;
+      }
+      return f (std::integral_constant<Model, Model::perspective> ());
+    }
 
     /** Retinal coordinates of a sensor-frame point: (x, y) orthographic, (x, depth_scale y / z) pushbroom,
       * (x / z, y / z) perspective; false behind a perspective or pushbroom sensor. */
@@ -295,16 +313,7 @@ namespace pcl
   bool
   RangeViewProjection::retinal (const Eigen::Vector3f& s, float& u, float& v) const
   {
-    switch (model_)
-    {
-      case ScanViewpoint::Model::orthographic:
-        return retinalAs<ScanViewpoint::Model::orthographic> (s, depth_scale_, u, v);
-      case ScanViewpoint::Model::pushbroom:
-        return retinalAs<ScanViewpoint::Model::pushbroom> (s, depth_scale_, u, v);
-      case ScanViewpoint::Model::perspective:
-        break;
-    }
-    return retinalAs<ScanViewpoint::Model::perspective> (s, depth_scale_, u, v);
+    return withModel (model_, [&] (auto model) { return retinalAs<decltype (model)::value> (s, depth_scale_, u, v); });
   }
 
   void
@@ -363,16 +372,7 @@ namespace pcl
   float
   RangeViewProjection::surfaceDepth (const Plane& plane, float u, float v) const
   {
-    switch (model_)
-    {
-      case ScanViewpoint::Model::orthographic:
-        return depthAs<ScanViewpoint::Model::orthographic> (plane, u - plane.u, v - plane.v);
-      case ScanViewpoint::Model::pushbroom:
-        return depthAs<ScanViewpoint::Model::pushbroom> (plane, u - plane.u, v - plane.v);
-      case ScanViewpoint::Model::perspective:
-        break;
-    }
-    return depthAs<ScanViewpoint::Model::perspective> (plane, u - plane.u, v - plane.v);
+    return withModel (model_, [&] (auto model) { return depthAs<decltype (model)::value> (plane, u - plane.u, v - plane.v); });
   }
 
   template <ScanViewpoint::Model M> float
@@ -396,16 +396,7 @@ namespace pcl
   RangeViewProjection::sampleSensor (const Eigen::Vector3f& s, Sample& out) const
   {
     // One dispatch per sample: integration samples millions of voxels per view.
-    switch (model_)
-    {
-      case ScanViewpoint::Model::orthographic:
-        return sampleAs<ScanViewpoint::Model::orthographic> (s, out);
-      case ScanViewpoint::Model::pushbroom:
-        return sampleAs<ScanViewpoint::Model::pushbroom> (s, out);
-      case ScanViewpoint::Model::perspective:
-        break;
-    }
-    return sampleAs<ScanViewpoint::Model::perspective> (s, out);
+    return withModel (model_, [&] (auto model) { return sampleAs<decltype (model)::value> (s, out); });
   }
 
   template <ScanViewpoint::Model M> bool
