@@ -105,3 +105,23 @@ TEST (GridSensorFit, StanfordBunnyScansArePushbroomScans)
   EXPECT_LT (distanceToAxis (fit.viewpoint, Eigen::Vector3d (0.0, 0.181, 1.351)), 2e-3);
   EXPECT_EQ (scan.viewpoint.model, pcl::ScanViewpoint::Model::pushbroom) << "loadRangeScan uses the fit";
 }
+
+TEST (GridSensorFit, DegenerateGridsAreNotFitted)
+{
+  // All points equal, a flat sheet seen edge-on, and coordinates that overflow the scatter's squares.
+  pcl::PointCloud<pcl::PointXYZ> same (40, 30), line (40, 30), huge (40, 30);
+  for (int r = 0; r < 30; ++r)
+    for (int c = 0; c < 40; ++c)
+    {
+      same.at (c, r) = pcl::PointXYZ (1.0f, 2.0f, 3.0f);
+      line.at (c, r) = pcl::PointXYZ (0.001f * c, 0.0f, 1.0f);
+      huge.at (c, r) = pcl::PointXYZ (1e30f * c, 1e30f * r, 1e30f * (c + r));
+    }
+  for (const auto* cloud : {&same, &line, &huge})
+    EXPECT_FALSE (pcl::fitPushbroomSensor (*cloud).found);
+  // Too few lines to tell a fan from a sweep.
+  pcl::PointCloud<pcl::PointXYZ> narrow (40, 2);
+  for (auto& p : narrow)
+    p = pcl::PointXYZ (0.1f, 0.2f, 1.0f);
+  EXPECT_FALSE (pcl::fitPushbroomSensor (narrow).found);
+}
