@@ -75,54 +75,68 @@ namespace pcl
       return solver.eigenvalues () (1) > 0.0;
     }
 
-    /** In the plane across the sweep (basis e1, e2), every fanned line is a line through the axis
-      * point c. Alternates fitting each line's direction through c with solving for c.
-      * \return false when the lines are (nearly) parallel: the axis is at infinity */
-    bool
-    commonAxis (const std::vector<std::vector<Eigen::Vector2d>>& lines, Eigen::Vector2d& c, double& sum_sq)
+    using Line2 = std::vector<Eigen::Vector2d>;
+
+    /** The unit normal of the 2D line through \a through that best fits \a line. */
+    Eigen::Vector2d
+    normalThrough (const Line2& line, const Eigen::Vector2d& through)
     {
-      // Start from each line's own fit: its centroid and its direction of largest spread.
-      std::vector<Eigen::Vector2d> through (lines.size ());
+      Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero ();
+      for (const auto& q : line)
+        scatter += (q - through) * (q - through).transpose ();
+      return Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> (scatter).eigenvectors ().col (0);
+    }
+
+    /** The point nearest every line (given by its normal) over all their points, in least squares:
+      * sum over the points of n n^T (q - c) = 0. \return false when the lines are (nearly) parallel */
+    bool
+    nearestPoint (const std::vector<Line2>& lines, const std::vector<Eigen::Vector2d>& normal, Eigen::Vector2d& c)
+    {
+      Eigen::Matrix2d a = Eigen::Matrix2d::Zero ();
+      Eigen::Vector2d b = Eigen::Vector2d::Zero ();
       for (std::size_t l = 0; l < lines.size (); ++l)
       {
-        through[l].setZero ();
+        const Eigen::Matrix2d nn = normal[l] * normal[l].transpose ();
         for (const auto& q : lines[l])
-          through[l] += q;
-        through[l] /= static_cast<double> (lines[l].size ());
+        {
+          a += nn;
+          b += nn * q;
+        }
       }
+      const Eigen::Vector2d spread = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> (a, Eigen::EigenvaluesOnly).eigenvalues ();
+      if (!(spread (0) > 1e-9 * spread (1)))
+        return false;
+      c = a.ldlt ().solve (b);
+      return std::isfinite (c.x ()) && std::isfinite (c.y ());
+    }
+
+    /** In the plane across the sweep (basis e1, e2), every fanned line is a line through the axis
+      * point c. Starts from each line's own fit, then alternates solving for c with refitting each
+      * line through c; \a sum_sq gets the squared residuals' sum.
+      * \return false when the lines are (nearly) parallel: the axis is at infinity */
+    bool
+    commonAxis (const std::vector<Line2>& lines, Eigen::Vector2d& c, double& sum_sq)
+    {
       std::vector<Eigen::Vector2d> normal (lines.size ());
-      for (int iteration = 0; iteration <= kAxisIterations; ++iteration)
+      for (std::size_t l = 0; l < lines.size (); ++l)
       {
-        for (std::size_t l = 0; l < lines.size (); ++l)
-        {
-          Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero ();
-          for (const auto& q : lines[l])
-            scatter += (q - through[l]) * (q - through[l]).transpose ();
-          normal[l] = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> (scatter).eigenvectors ().col (0);
-        }
-        // The point nearest every line in least squares: sum_l n_l n_l^T (q - c) = 0 over the points.
-        Eigen::Matrix2d a = Eigen::Matrix2d::Zero ();
-        Eigen::Vector2d b = Eigen::Vector2d::Zero ();
-        for (std::size_t l = 0; l < lines.size (); ++l)
-        {
-          const Eigen::Matrix2d nn = normal[l] * normal[l].transpose ();
-          for (const auto& q : lines[l])
-          {
-            a += nn;
-            b += nn * q;
-          }
-        }
-        const Eigen::Vector2d spread = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> (a, Eigen::EigenvaluesOnly).eigenvalues ();
-        if (!(spread (0) > 1e-9 * spread (1)))
+        Eigen::Vector2d mean = Eigen::Vector2d::Zero ();
+        for (const auto& q : lines[l])
+          mean += q;
+        normal[l] = normalThrough (lines[l], mean / static_cast<double> (lines[l].size ()));
+      }
+      for (int iteration = 0; iteration < kAxisIterations; ++iteration)
+      {
+        if (!nearestPoint (lines, normal, c))
           return false;
-        c = a.ldlt ().solve (b);
-        std::fill (through.begin (), through.end (), c);
+        for (std::size_t l = 0; l < lines.size (); ++l)
+          normal[l] = normalThrough (lines[l], c);
       }
       sum_sq = 0.0;
       for (std::size_t l = 0; l < lines.size (); ++l)
         for (const auto& q : lines[l])
           sum_sq += std::pow (normal[l].dot (q - c), 2);
-      return std::isfinite (c.x ()) && std::isfinite (c.y ());
+      return true;
     }
 
     /** Median distance between grid neighbours along the lines: the scale of fan_rms and sweep_rms. */
@@ -160,7 +174,7 @@ namespace pcl
       if (fanned.size () < 3 || swept.size () < 3 || !(spacing > 0.0) || !sweepDirection (swept, sweep, sweep_sq))
         return fit;
       const Eigen::Vector3d e1 = sweep.unitOrthogonal (), e2 = sweep.cross (e1);
-      std::vector<std::vector<Eigen::Vector2d>> across (fanned.size ());
+      std::vector<Line2> across (fanned.size ());
       Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
       for (std::size_t l = 0; l < fanned.size (); ++l)
         for (const auto& p : fanned[l])
