@@ -35,8 +35,8 @@ namespace pcl
     /** \brief How the lines of sight run. */
     Model model = Model::perspective;
 
-    /** \brief The default for files that carry no sensor pose (PLY): an orthographic sensor on the
-      * +z side of the scan, looking down -z, as the raw Stanford scans were taken.
+    /** \brief The default for files that carry no sensor pose (PLY) and no grid a pushbroom explains
+      * (fitPushbroomSensor): an orthographic sensor on the +z side of the scan, looking down -z.
       */
     static ScanViewpoint
     fromPositiveZ ();
