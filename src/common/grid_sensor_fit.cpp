@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -20,40 +21,86 @@ namespace pcl
     /** Alternations between the axis and the planes through it; the fit settles within a few. */
     constexpr int kAxisIterations = 4;
 
-    using Line = std::vector<Eigen::Vector3d>;
-
-    /** The finite points of each row (by_rows) or each column, keeping lines of kMinLinePoints or more.
-      * With \a by_parity each line's even and odd cells become two lines: a staggered sweep (the
-      * Cyberware's odd rows sit half a column over) keeps each half at one sweep position. */
-    std::vector<Line>
-    gridLines (const pcl::PointCloud<pcl::PointXYZ>& cloud, bool by_rows, bool by_parity)
+    /** What the fit needs of one grid line: its finite points' count, sum and sum of outer products,
+      * relative to a point of the scan (for precision). */
+    struct Line
     {
-      const std::size_t lines = by_rows ? cloud.height : cloud.width, length = by_rows ? cloud.width : cloud.height;
-      const std::size_t step = by_parity ? 2 : 1;
-      std::vector<Line> out;
-      for (std::size_t l = 0; l < lines; ++l)
-        for (std::size_t first = 0; first < step; ++first)
+      double n = 0.0;
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
+      Eigen::Matrix3d outer = Eigen::Matrix3d::Zero ();
+
+      void
+      add (const Eigen::Vector3d& p)
+      {
+        n += 1.0;
+        sum += p;
+        outer += p * p.transpose ();
+      }
+
+      /** Scatter about \a c: sum of (p - c)(p - c)^T. */
+      Eigen::Matrix3d
+      scatterAbout (const Eigen::Vector3d& c) const
+      {
+        return outer - c * sum.transpose () - sum * c.transpose () + n * c * c.transpose ();
+      }
+    };
+
+    /** The scan's grid lines, gathered in one pass: rows and columns, and each of them split into its
+      * even and odd cells (a staggered sweep, like the Cyberware's whose odd rows sit half a column
+      * over, keeps each half at one sweep position). */
+    struct GridLines
+    {
+      std::vector<Line> rows, columns, row_halves, column_halves;
+      /** Distances between consecutive finite points along the rows and along the columns. */
+      std::vector<double> row_steps, column_steps;
+
+      explicit GridLines (const pcl::PointCloud<pcl::PointXYZ>& cloud)
+        : rows (cloud.height), columns (cloud.width), row_halves (2 * cloud.height), column_halves (2 * cloud.width)
+      {
+        const Eigen::Vector3d origin = firstFinite (cloud);
+        std::vector<Eigen::Vector3d> above (cloud.width, Eigen::Vector3d::Zero ());
+        std::vector<bool> has_above (cloud.width, false);
+        for (std::size_t r = 0; r < cloud.height; ++r)
         {
-          Line line;
-          for (std::size_t k = first; k < length; k += step)
+          bool has_left = false;
+          Eigen::Vector3d left = Eigen::Vector3d::Zero ();
+          for (std::size_t c = 0; c < cloud.width; ++c)
           {
-            const auto& p = by_rows ? cloud.at (k, l) : cloud.at (l, k);
-            if (pcl::isXYZFinite (p))
-              line.push_back (p.getVector3fMap ().cast<double> ());
+            const auto& point = cloud.at (c, r);
+            if (!pcl::isXYZFinite (point))
+              continue;
+            const Eigen::Vector3d p = point.getVector3fMap ().cast<double> () - origin;
+            rows[r].add (p), columns[c].add (p);
+            row_halves[2 * r + c % 2].add (p), column_halves[2 * c + r % 2].add (p);
+            if (has_left)
+              row_steps.push_back ((p - left).norm ());
+            if (has_above[c])
+              column_steps.push_back ((p - above[c]).norm ());
+            left = above[c] = p;
+            has_left = true;
+            has_above[c] = true;
           }
-          if (line.size () >= kMinLinePoints)
-            out.push_back (std::move (line));
         }
-      return out;
-    }
+      }
 
-    Eigen::Vector3d
-    centroid (const Line& line)
+      static Eigen::Vector3d
+      firstFinite (const pcl::PointCloud<pcl::PointXYZ>& cloud)
+      {
+        for (const auto& p : cloud)
+          if (pcl::isXYZFinite (p))
+            return p.getVector3fMap ().cast<double> ();
+        return Eigen::Vector3d::Zero ();
+      }
+    };
+
+    /** The lines with at least kMinLinePoints finite points. */
+    std::vector<Line>
+    longLines (const std::vector<Line>& lines)
     {
-      Eigen::Vector3d c = Eigen::Vector3d::Zero ();
-      for (const auto& p : line)
-        c += p;
-      return c / static_cast<double> (line.size ());
+      std::vector<Line> out;
+      std::copy_if (lines.begin (), lines.end (), std::back_inserter (out),
+                    [] (const Line& l) { return l.n >= static_cast<double> (kMinLinePoints); });
+      return out;
     }
 
     /** The sweep direction: the common normal of the planes x = const, one per swept line, each at
@@ -64,27 +111,36 @@ namespace pcl
     {
       Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero ();
       for (const auto& line : lines)
-      {
-        const Eigen::Vector3d c = centroid (line);
-        for (const auto& p : line)
-          scatter += (p - c) * (p - c).transpose ();
-      }
+        scatter += line.scatterAbout (line.sum / line.n);
       const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (scatter);
       direction = solver.eigenvectors ().col (0);
       sum_sq = std::max (0.0, solver.eigenvalues () (0));
       return solver.eigenvalues () (1) > 0.0;
     }
 
-    using Line2 = std::vector<Eigen::Vector2d>;
+    /** A line's moments on the plane across the sweep (basis rows e1, e2 of \a across). */
+    struct Line2
+    {
+      double n = 0.0;
+      Eigen::Vector2d sum;
+      Eigen::Matrix2d outer;
+
+      Line2 (const Line& line, const Eigen::Matrix<double, 2, 3>& across)
+        : n (line.n), sum (across * line.sum), outer (across * line.outer * across.transpose ())
+      {}
+
+      Eigen::Matrix2d
+      scatterAbout (const Eigen::Vector2d& c) const
+      {
+        return outer - c * sum.transpose () - sum * c.transpose () + n * c * c.transpose ();
+      }
+    };
 
     /** The unit normal of the 2D line through \a through that best fits \a line. */
     Eigen::Vector2d
     normalThrough (const Line2& line, const Eigen::Vector2d& through)
     {
-      Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero ();
-      for (const auto& q : line)
-        scatter += (q - through) * (q - through).transpose ();
-      return Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> (scatter).eigenvectors ().col (0);
+      return Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> (line.scatterAbout (through)).eigenvectors ().col (0);
     }
 
     /** The point nearest every line (given by its normal) over all their points, in least squares:
@@ -97,11 +153,8 @@ namespace pcl
       for (std::size_t l = 0; l < lines.size (); ++l)
       {
         const Eigen::Matrix2d nn = normal[l] * normal[l].transpose ();
-        for (const auto& q : lines[l])
-        {
-          a += nn;
-          b += nn * q;
-        }
+        a += lines[l].n * nn;
+        b += nn * lines[l].sum;
       }
       const Eigen::Vector2d spread = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> (a, Eigen::EigenvaluesOnly).eigenvalues ();
       if (!(spread (0) > 1e-9 * spread (1)))
@@ -110,21 +163,16 @@ namespace pcl
       return std::isfinite (c.x ()) && std::isfinite (c.y ());
     }
 
-    /** In the plane across the sweep (basis e1, e2), every fanned line is a line through the axis
-      * point c. Starts from each line's own fit, then alternates solving for c with refitting each
-      * line through c; \a sum_sq gets the squared residuals' sum.
+    /** In the plane across the sweep, every fanned line is a line through the axis point c. Starts
+      * from each line's own fit, then alternates solving for c with refitting each line through c;
+      * \a sum_sq gets the squared residuals' sum.
       * \return false when the lines are (nearly) parallel: the axis is at infinity */
     bool
     commonAxis (const std::vector<Line2>& lines, Eigen::Vector2d& c, double& sum_sq)
     {
       std::vector<Eigen::Vector2d> normal (lines.size ());
       for (std::size_t l = 0; l < lines.size (); ++l)
-      {
-        Eigen::Vector2d mean = Eigen::Vector2d::Zero ();
-        for (const auto& q : lines[l])
-          mean += q;
-        normal[l] = normalThrough (lines[l], mean / static_cast<double> (lines[l].size ()));
-      }
+        normal[l] = normalThrough (lines[l], lines[l].sum / lines[l].n);
       for (int iteration = 0; iteration < kAxisIterations; ++iteration)
       {
         if (!nearestPoint (lines, normal, c))
@@ -134,38 +182,34 @@ namespace pcl
       }
       sum_sq = 0.0;
       for (std::size_t l = 0; l < lines.size (); ++l)
-        for (const auto& q : lines[l])
-          sum_sq += std::pow (normal[l].dot (q - c), 2);
+        sum_sq += std::max (0.0, normal[l].dot (lines[l].scatterAbout (c) * normal[l]));
       return true;
     }
 
-    /** Median distance between grid neighbours along the lines: the scale of fan_rms and sweep_rms. */
+    /** The median of \a steps (which it reorders); 0 when empty. */
     double
-    medianSpacing (const std::vector<Line>& lines)
+    median (std::vector<double>& steps)
     {
-      std::vector<double> steps;
-      for (const auto& line : lines)
-        for (std::size_t k = 1; k < line.size (); ++k)
-          steps.push_back ((line[k] - line[k - 1]).norm ());
       if (steps.empty ())
         return 0.0;
       std::nth_element (steps.begin (), steps.begin () + steps.size () / 2, steps.end ());
       return steps[steps.size () / 2];
     }
 
-    std::size_t
+    double
     pointCount (const std::vector<Line>& lines)
     {
-      std::size_t n = 0;
+      double n = 0.0;
       for (const auto& line : lines)
-        n += line.size ();
+        n += line.n;
       return n;
     }
 
     /** One assignment: \a fanned lines in planes through the axis, \a swept lines at one sweep
       * position each. */
     GridSensorFit
-    fitAssignment (const std::vector<Line>& fanned, const std::vector<Line>& swept, double spacing)
+    fitAssignment (const std::vector<Line>& fanned, const std::vector<Line>& swept, double spacing,
+                   const Eigen::Vector3d& origin)
     {
       GridSensorFit fit;
       fit.fan_rms = fit.sweep_rms = std::numeric_limits<double>::infinity ();
@@ -174,22 +218,23 @@ namespace pcl
       if (fanned.size () < 3 || swept.size () < 3 || !(spacing > 0.0) || !sweepDirection (swept, sweep, sweep_sq))
         return fit;
       const Eigen::Vector3d e1 = sweep.unitOrthogonal (), e2 = sweep.cross (e1);
-      std::vector<Line2> across (fanned.size ());
-      Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
-      for (std::size_t l = 0; l < fanned.size (); ++l)
-        for (const auto& p : fanned[l])
-        {
-          across[l].emplace_back (p.dot (e1), p.dot (e2));
-          mean += p;
-        }
+      Eigen::Matrix<double, 2, 3> across;
+      across << e1.transpose (), e2.transpose ();
+      std::vector<Line2> lines;
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
+      for (const auto& line : fanned)
+      {
+        lines.emplace_back (line, across);
+        sum += line.sum;
+      }
       Eigen::Vector2d axis;
       double fan_sq = 0.0;
-      if (!commonAxis (across, axis, fan_sq))
+      if (!commonAxis (lines, axis, fan_sq))
         return fit;
-      fit.fan_rms = std::sqrt (fan_sq / static_cast<double> (pointCount (fanned))) / spacing;
-      fit.sweep_rms = std::sqrt (sweep_sq / static_cast<double> (pointCount (swept))) / spacing;
-      fit.viewpoint = ScanViewpoint::pushbroom (axis.x () * e1 + axis.y () * e2, sweep,
-                                                mean / static_cast<double> (pointCount (fanned)));
+      fit.fan_rms = std::sqrt (fan_sq / pointCount (fanned)) / spacing;
+      fit.sweep_rms = std::sqrt (sweep_sq / pointCount (swept)) / spacing;
+      fit.viewpoint = ScanViewpoint::pushbroom (origin + axis.x () * e1 + axis.y () * e2, sweep,
+                                                origin + sum / pointCount (fanned));
       return fit;
     }
   }
@@ -201,12 +246,14 @@ namespace pcl
     best.fan_rms = best.sweep_rms = std::numeric_limits<double>::infinity ();
     if (!cloud.isOrganized () || cloud.width < kMinLinePoints || cloud.height < kMinLinePoints)
       return best;
-    const std::vector<Line> rows = gridLines (cloud, true, false), columns = gridLines (cloud, false, false);
-    const double spacing = std::min (medianSpacing (rows), medianSpacing (columns));
+    GridLines grid (cloud);
+    const double spacing = std::min (median (grid.row_steps), median (grid.column_steps));
+    const Eigen::Vector3d origin = GridLines::firstFinite (cloud);
+    const std::vector<Line> rows = longLines (grid.rows), columns = longLines (grid.columns);
     for (const bool rows_fanned : {true, false})
     {
-      const GridSensorFit fit = rows_fanned ? fitAssignment (rows, gridLines (cloud, false, true), spacing)
-                                            : fitAssignment (columns, gridLines (cloud, true, true), spacing);
+      const GridSensorFit fit = rows_fanned ? fitAssignment (rows, longLines (grid.column_halves), spacing, origin)
+                                            : fitAssignment (columns, longLines (grid.row_halves), spacing, origin);
       if (fit.fan_rms < best.fan_rms)
         best = fit;
     }
