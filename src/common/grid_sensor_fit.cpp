@@ -50,14 +50,16 @@ namespace pcl
       * over, keeps each half at one sweep position). */
     struct GridLines
     {
+      /** The scan point the moments are taken relative to. */
+      Eigen::Vector3d origin;
       std::vector<Line> rows, columns, row_halves, column_halves;
       /** Distances between consecutive finite points along the rows and along the columns. */
       std::vector<double> row_steps, column_steps;
 
       explicit GridLines (const pcl::PointCloud<pcl::PointXYZ>& cloud)
-        : rows (cloud.height), columns (cloud.width), row_halves (2 * cloud.height), column_halves (2 * cloud.width)
+        : origin (firstFinite (cloud)), rows (cloud.height), columns (cloud.width), row_halves (2 * cloud.height),
+          column_halves (2 * cloud.width)
       {
-        const Eigen::Vector3d origin = firstFinite (cloud);
         std::vector<Eigen::Vector3d> above (cloud.width, Eigen::Vector3d::Zero ());
         std::vector<bool> has_above (cloud.width, false);
         for (std::size_t r = 0; r < cloud.height; ++r)
@@ -248,12 +250,11 @@ namespace pcl
       return best;
     GridLines grid (cloud);
     const double spacing = std::min (median (grid.row_steps), median (grid.column_steps));
-    const Eigen::Vector3d origin = GridLines::firstFinite (cloud);
     const std::vector<Line> rows = longLines (grid.rows), columns = longLines (grid.columns);
     for (const bool rows_fanned : {true, false})
     {
-      const GridSensorFit fit = rows_fanned ? fitAssignment (rows, longLines (grid.column_halves), spacing, origin)
-                                            : fitAssignment (columns, longLines (grid.row_halves), spacing, origin);
+      const GridSensorFit fit = rows_fanned ? fitAssignment (rows, longLines (grid.column_halves), spacing, grid.origin)
+                                            : fitAssignment (columns, longLines (grid.row_halves), spacing, grid.origin);
       if (fit.fan_rms < best.fan_rms)
         best = fit;
     }
