@@ -146,36 +146,35 @@ TEST (RangeScanTriangulation, TiltedPlaneKeepsEveryTriangle)
 
 TEST (RangeScanTriangulation, ShuffledScanThroughDelaunayHasTheGridArea)
 {
-  PCL_TENSOR_REQUIRE_SHARED_DATA (path, "stanford/bunny/bun000.ply");
-  const pcl::io::RangeScan scan = pcl::io::loadRangeScan (path);
-  pcl::RangeScanTriangulation triangulation;
-  pcl::ScanMesh grid;
-  triangulation.triangulate (*scan.cloud, grid);
+  // bun000, and bun180: the farthest from its grid of the 10 scans (0.981; all 10 are measured by
+  // build/bench/eval_triangulation --bunny).
+  for (const char* name : {"bun000.ply", "bun180.ply"})
+  {
+    PCL_TENSOR_REQUIRE_SHARED_DATA (path, std::string ("stanford/bunny/") + name);
+    const pcl::io::RangeScan scan = pcl::io::loadRangeScan (path);
+    pcl::RangeScanTriangulation triangulation;
+    pcl::ScanMesh grid;
+    triangulation.triangulate (*scan.cloud, grid);
 
-  pcl::PointCloud<pcl::PointXYZ> shuffled;
-  for (const auto& p : *scan.cloud)
-    if (std::isfinite (p.x))
-      shuffled.push_back (p);
-  std::mt19937 rng (2006);
-  std::shuffle (shuffled.begin (), shuffled.end (), rng);
-  // The scan's own sensor (the pushbroom fitted to its grid) defines the retinal plane, as it would
-  // for a user who kept the sensor but lost the grid.
-  ASSERT_EQ (scan.viewpoint.model, pcl::ScanViewpoint::Model::pushbroom);
-  triangulation.setViewpoint (scan.viewpoint);
-  pcl::ScanMesh delaunay;
-  triangulation.triangulate (shuffled, delaunay);
-
-  EXPECT_EQ (delaunay.cloud->size (), scan.finite_points);
-  const double ratio = pcl::meshArea (delaunay) / pcl::meshArea (grid);
-  std::cout << "Delaunay/grid area ratio: " << ratio << std::endl;
-  // The foundation issue asks for 2%; on bun000 the Delaunay path gives 1.097 (measured, not met;
-  // 1.11 projected along +z). The retinal-plane Delaunay fills the scanner's shadow gaps that the
-  // grid leaves open, and Section 2's mean + 0.6 stddev rule prunes only the longest of those fills.
-  // The 2% holds where the scan has no gaps (HeightFieldDelaunayMatchesGridArea). This bound guards
-  // against regressions of the measured state: the Delaunay mesh covers the grid's surface and at
-  // most 10% more.
-  EXPECT_GE (ratio, 0.98);
-  EXPECT_LE (ratio, 1.10);
+    pcl::PointCloud<pcl::PointXYZ> shuffled;
+    for (const auto& p : *scan.cloud)
+      if (std::isfinite (p.x))
+        shuffled.push_back (p);
+    std::mt19937 rng (2006);
+    std::shuffle (shuffled.begin (), shuffled.end (), rng);
+    // The scan's own sensor (the pushbroom fitted to its grid) defines the retinal plane, as it would
+    // for a user who kept the sensor but lost the grid.
+    ASSERT_EQ (scan.viewpoint.model, pcl::ScanViewpoint::Model::pushbroom);
+    triangulation.setViewpoint (scan.viewpoint);
+    pcl::ScanMesh delaunay;
+    triangulation.triangulate (shuffled, delaunay);
+    EXPECT_EQ (delaunay.cloud->size (), scan.finite_points);
+    const double ratio = pcl::meshArea (delaunay) / pcl::meshArea (grid);
+    std::cout << name << ": Delaunay/grid area ratio " << ratio << std::endl;
+    // Without the gap rule (setGapRetinalMedians (inf)), Delaunay's fills of the scanner's gaps
+    // inflate the pruning statistics and survive: 1.097 on bun000.
+    EXPECT_NEAR (ratio, 1.0, 0.02) << name;
+  }
 }
 
 TEST (RangeScanTriangulation, HeightFieldDelaunayMatchesGridArea)
@@ -205,4 +204,6 @@ TEST (RangeScanTriangulation, DegenerateInputThrows)
   pcl::PointCloud<pcl::PointXYZ> all_nan (4, 4, pcl::PointXYZ (std::nanf (""), 0, 0));
   EXPECT_THROW (triangulation.triangulate (all_nan, mesh), pcl::InvalidScanException);
   EXPECT_THROW (triangulation.setEdgeStdDevs (std::nan ("")), pcl::BadArgumentException);
+  EXPECT_THROW (triangulation.setGapRetinalMedians (0.5), pcl::BadArgumentException);
+  EXPECT_THROW (triangulation.setGapRetinalMedians (std::nan ("")), pcl::BadArgumentException);
 }

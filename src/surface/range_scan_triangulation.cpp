@@ -13,10 +13,13 @@
 #include <vtkSmartPointer.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <numeric>
 
 namespace pcl
 {
@@ -105,20 +108,48 @@ namespace pcl
       return !(spread (0) > 1e-12 * spread (1));
     }
 
-    /** 2D Delaunay triangulation of the vertices projected onto the sensor's retinal plane. */
-    std::vector<Triangle>
-    triangulateDelaunay (const ScanMesh& mesh, const ScanViewpoint& viewpoint)
+    /** The vertices projected onto the sensor's retinal plane. */
+    std::vector<Eigen::Vector2d>
+    projectToRetina (const ScanMesh& mesh, const ScanViewpoint& viewpoint)
     {
       std::vector<Eigen::Vector2d> uv (mesh.cloud->size ());
       for (std::size_t i = 0; i < mesh.cloud->size (); ++i)
         uv[i] = viewpoint.project ((*mesh.cloud)[i].getVector3fMap ().cast<double> ());
+      return uv;
+    }
+
+    /** The points in rows about one point spacing high, each row by x: the order of a scan's grid.
+      * vtkDelaunay2D locates each new point by walking from the last triangle it made, so neighbours
+      * inserted one after the other keep the walks short: a shuffled bunny scan takes 0.6 s in this
+      * order instead of 4.5 s (bun000). */
+    std::vector<std::size_t>
+    rowMajorOrder (const std::vector<Eigen::Vector2d>& uv)
+    {
+      Eigen::AlignedBox2d box;
+      for (const auto& p : uv)
+        box.extend (p);
+      const double spacing = std::sqrt (box.volume () / static_cast<double> (uv.size ()));
+      std::vector<std::pair<std::int64_t, double>> key (uv.size ());
+      for (std::size_t i = 0; i < uv.size (); ++i)
+        key[i] = {static_cast<std::int64_t> ((uv[i].y () - box.min ().y ()) / spacing), uv[i].x ()};
+      std::vector<std::size_t> order (uv.size ());
+      std::iota (order.begin (), order.end (), std::size_t{0});
+      std::sort (order.begin (), order.end (), [&] (std::size_t a, std::size_t b) { return key[a] < key[b]; });
+      return order;
+    }
+
+    /** 2D Delaunay triangulation of the vertices at their retinal positions \a uv. */
+    std::vector<Triangle>
+    triangulateDelaunay (const std::vector<Eigen::Vector2d>& uv)
+    {
       if (spanNoArea (uv))
         return {};
+      const std::vector<std::size_t> order = rowMajorOrder (uv);
       auto points = vtkSmartPointer<vtkPoints>::New ();
       points->SetDataTypeToDouble ();
-      points->SetNumberOfPoints (static_cast<vtkIdType> (mesh.cloud->size ()));
-      for (std::size_t i = 0; i < uv.size (); ++i)
-        points->SetPoint (static_cast<vtkIdType> (i), uv[i].x (), uv[i].y (), 0.0);
+      points->SetNumberOfPoints (static_cast<vtkIdType> (uv.size ()));
+      for (std::size_t k = 0; k < order.size (); ++k)
+        points->SetPoint (static_cast<vtkIdType> (k), uv[order[k]].x (), uv[order[k]].y (), 0.0);
       auto input = vtkSmartPointer<vtkPolyData>::New ();
       input->SetPoints (points);
       auto delaunay = vtkSmartPointer<vtkDelaunay2D>::New ();
@@ -135,8 +166,9 @@ namespace pcl
       {
         if (ids->GetNumberOfIds () != 3)
           continue;
-        Triangle t = {static_cast<pcl::index_t> (ids->GetId (0)), static_cast<pcl::index_t> (ids->GetId (1)),
-                      static_cast<pcl::index_t> (ids->GetId (2))};
+        Triangle t;
+        for (int c = 0; c < 3; ++c)
+          t[c] = static_cast<pcl::index_t> (order[static_cast<std::size_t> (ids->GetId (c))]);
         // Counter-clockwise on the retinal plane: storeOriented needs one turn for every triangle.
         const Eigen::Vector2d e1 = uv[t[1]] - uv[t[0]], e2 = uv[t[2]] - uv[t[0]];
         if (e1.x () * e2.y () - e1.y () * e2.x () < 0.0)
@@ -146,8 +178,40 @@ namespace pcl
       return triangles;
     }
 
+    template <typename Vector> double
+    longestEdge (const Vector& a, const Vector& b, const Vector& c)
+    {
+      return std::max ({(b - a).norm (), (c - b).norm (), (a - c).norm ()});
+    }
+
+    double
+    median (std::vector<double> values)
+    {
+      const auto middle = values.begin () + static_cast<std::ptrdiff_t> (values.size () / 2);
+      std::nth_element (values.begin (), middle, values.end ());
+      return *middle;
+    }
+
+    /** Per triangle, whether it belongs in the pruning statistics: false for those whose longest
+      * retinal edge exceeds \a k median lengths. The sensor samples its retinal plane evenly, so
+      * only a triangle across missing samples is that long there, even where the surface is steep. */
+    std::vector<bool>
+    spanNoGap (const std::vector<Triangle>& triangles, const std::vector<Eigen::Vector2d>& uv, double k)
+    {
+      if (triangles.empty ())
+        return {};
+      std::vector<double> longest (triangles.size ());
+      for (std::size_t t = 0; t < triangles.size (); ++t)
+        longest[t] = longestEdge (uv[triangles[t][0]], uv[triangles[t][1]], uv[triangles[t][2]]);
+      const double limit = k * median (longest);
+      std::vector<bool> in_statistics (triangles.size ());
+      for (std::size_t t = 0; t < triangles.size (); ++t)
+        in_statistics[t] = longest[t] <= limit;
+      return in_statistics;
+    }
+
     /** Drop triangles whose longest edge exceeds max(mean + k * stddev, floor * median) of the
-      * triangles' longest edges.
+      * longest edges of the triangles flagged in \a in_statistics (all when it is empty).
       * Section 2 states the rule over edge lengths; taken over every edge it would prune every
       * triangle of a regular grid, whose diagonals are all sqrt(2) times the mean. Over each
       * triangle's longest edge it keeps a regular grid whole, and on the raw Stanford scans it
@@ -155,26 +219,27 @@ namespace pcl
       * The floor matters where the lengths barely vary (a tilted plane, a synthetic render): there
       * the stddev is rounding noise and mean + k * stddev would cut 27% of a smooth surface. */
     std::vector<Triangle>
-    pruneLongEdges (const ScanMesh& mesh, const std::vector<Triangle>& triangles, double k, double floor_medians)
+    pruneLongEdges (const ScanMesh& mesh, const std::vector<Triangle>& triangles, const std::vector<bool>& in_statistics,
+                    double k, double floor_medians)
     {
-      std::vector<double> longest (triangles.size (), 0.0);
+      const auto vertex = [&] (pcl::index_t i) { return (*mesh.cloud)[i].getVector3fMap ().cast<double> ().eval (); };
+      std::vector<double> longest (triangles.size ()), counted;
+      counted.reserve (triangles.size ());
       double sum = 0.0, sum2 = 0.0;
       for (std::size_t t = 0; t < triangles.size (); ++t)
       {
-        for (int e = 0; e < 3; ++e)
-          longest[t] = std::max (longest[t], ((*mesh.cloud)[triangles[t][e]].getVector3fMap ()
-                                              - (*mesh.cloud)[triangles[t][(e + 1) % 3]].getVector3fMap ()).cast<double> ().norm ());
+        longest[t] = longestEdge (vertex (triangles[t][0]), vertex (triangles[t][1]), vertex (triangles[t][2]));
+        if (!in_statistics.empty () && !in_statistics[t])
+          continue;
+        counted.push_back (longest[t]);
         sum += longest[t];
         sum2 += longest[t] * longest[t];
       }
-      const double n = static_cast<double> (triangles.size ());
+      const double n = static_cast<double> (counted.size ());
       const double mean = sum / n;
       const double stddev = std::sqrt (std::max (0.0, sum2 / n - mean * mean));
-      std::vector<double> sorted = longest;
-      std::nth_element (sorted.begin (), sorted.begin () + static_cast<std::ptrdiff_t> (sorted.size () / 2), sorted.end ());
-      const double median = sorted[sorted.size () / 2];
       // A relative epsilon keeps equal edges equal despite rounding in the statistics.
-      const double threshold = std::max (mean + k * stddev, floor_medians * median) * (1.0 + 1e-9);
+      const double threshold = std::max (mean + k * stddev, floor_medians * median (counted)) * (1.0 + 1e-9);
       std::vector<Triangle> kept;
       kept.reserve (triangles.size ());
       for (std::size_t t = 0; t < triangles.size (); ++t)
@@ -229,6 +294,15 @@ namespace pcl
   }
 
   void
+  RangeScanTriangulation::setGapRetinalMedians (double k)
+  {
+    // Under 1 it would leave the median triangle, or every triangle, out of the statistics.
+    if (!(k >= 1.0))
+      PCL_TENSOR_THROW (BadArgumentException, "gap factor must be at least 1, got " << k);
+    gap_retinal_medians_ = k;
+  }
+
+  void
   RangeScanTriangulation::triangulate (const pcl::PointCloud<pcl::PointXYZ>& cloud, ScanMesh& mesh) const
   {
     mesh.viewpoint = viewpoint_;
@@ -236,12 +310,20 @@ namespace pcl
     if (mesh.cloud->size () < 3)
       PCL_TENSOR_THROW (InvalidScanException, "triangulation needs at least 3 finite points, got " << mesh.cloud->size ());
 
-    const bool grid = cloud.isOrganized () && !force_delaunay_;
-    std::vector<Triangle> triangles = grid ? triangulateGrid (cloud, vertex_of) : triangulateDelaunay (mesh, viewpoint_);
+    std::vector<Triangle> triangles;
+    std::vector<bool> in_statistics;
+    if (cloud.isOrganized () && !force_delaunay_)
+      triangles = triangulateGrid (cloud, vertex_of);
+    else
+    {
+      const std::vector<Eigen::Vector2d> uv = projectToRetina (mesh, viewpoint_);
+      triangles = triangulateDelaunay (uv);
+      in_statistics = spanNoGap (triangles, uv, gap_retinal_medians_);
+    }
     if (triangles.empty ())
       PCL_TENSOR_THROW (InvalidScanException, "no triangle can be formed: the " << mesh.cloud->size ()
                         << " points are collinear or isolated on the retinal plane");
-    storeOriented (pruneLongEdges (mesh, triangles, edge_std_devs_, edge_floor_medians_), mesh);
+    storeOriented (pruneLongEdges (mesh, triangles, in_statistics, edge_std_devs_, edge_floor_medians_), mesh);
     if (mesh.polygons.empty ())
       PCL_TENSOR_THROW (InvalidScanException, "every triangle is degenerate (the points are collinear)");
   }
