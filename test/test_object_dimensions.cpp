@@ -97,3 +97,36 @@ TEST (ObjectDimensions, TooFewFinitePointsThrow)
   EXPECT_THROW (pcl::principalExtents (cloud), pcl::InvalidScanException);
   EXPECT_THROW (pcl::computeObjectDimensions<pcl::PointXYZ> ({}), pcl::InvalidScanException);
 }
+
+TEST (ObjectDimensions, RegisteredViewsAreMeasuredInTheBestOfTheirFrames)
+{
+  // An L of two strips that together fill a 2 x 1 box: their combined principal axes are tilted, so
+  // the L sticks out of that box there; the long strip's own frame is the box's.
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i <= 200; ++i)
+    for (int j = 0; j <= 20; ++j)
+      points.emplace_back (0.01 * i, 0.01 * j, 0.0);
+  const std::size_t second_view = points.size ();
+  for (int i = 0; i <= 20; ++i)
+    for (int j = 1; j <= 80; ++j)
+      points.emplace_back (0.01 * i, 0.2 + 0.01 * j, 0.0);
+  pcl::ObjectDimensions dims;
+  dims.D = Eigen::Vector3d (2.0, 1.0, 0.0);
+
+  const double combined_frame = pcl::dimensionExcess (pcl::principalExtents (points), dims, 2);
+  std::cout << "excess in the combined principal frame: " << combined_frame << std::endl;
+  EXPECT_GT (combined_frame, 0.05);
+  EXPECT_NEAR (pcl::registeredDimensionExcess (points, {0, second_view}, dims, 2), 0.0, 1e-9);
+  // Without the views' own frames it is Eq. 9 as written.
+  EXPECT_DOUBLE_EQ (pcl::registeredDimensionExcess (points, {}, dims, 2), combined_frame);
+
+  // The same, turned and moved anywhere.
+  const Eigen::Affine3d pose = Eigen::Translation3d (5.0, -3.0, 2.0) * Eigen::AngleAxisd (0.7, Eigen::Vector3d (1, 2, 3).normalized ());
+  std::vector<Eigen::Vector3d> moved;
+  for (const auto& p : points)
+    moved.push_back (pose * p);
+  EXPECT_NEAR (pcl::registeredDimensionExcess (moved, {0, second_view}, dims, 2), 0.0, 1e-9);
+
+  EXPECT_THROW (pcl::registeredDimensionExcess (points, {second_view, 0}, dims, 2), pcl::BadArgumentException);
+  EXPECT_THROW (pcl::registeredDimensionExcess (points, {0, points.size () + 1}, dims, 2), pcl::BadArgumentException);
+}

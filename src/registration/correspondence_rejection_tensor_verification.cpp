@@ -203,7 +203,7 @@ namespace pcl
       const Eigen::Matrix4d td = t.cast<double> ();
       for (const auto& p : scene)
         points.push_back ((td * p.getVector4fMap ().cast<double> ()).head<3> ());
-      return pcl::dimensionExcess (principalExtents (points), dims_, params_.checked_dimensions);
+      return registeredDimensionExcess (points, {0, model.size ()}, dims_, params_.checked_dimensions);
     }
 
     bool

@@ -30,6 +30,7 @@ namespace pcl
     void
     GlobalVerification::addView (const pcl::PointCloud<pcl::PointNormal>& cloud, const Eigen::Affine3d& pose)
     {
+      view_starts_.push_back (points_.size ());
       appendTransformed (cloud, pose, points_);
     }
 
@@ -37,8 +38,10 @@ namespace pcl
     GlobalVerification::excess (const pcl::PointCloud<pcl::PointNormal>& cloud, const Eigen::Affine3d& pose) const
     {
       std::vector<Eigen::Vector3d> points = points_;
+      std::vector<std::size_t> view_starts = view_starts_;
+      view_starts.push_back (points.size ());
       appendTransformed (cloud, pose, points);
-      return dimensionExcess (principalExtents (points), dims_, params_.checked_dimensions) / resolution_;
+      return registeredDimensionExcess (points, view_starts, dims_, params_.checked_dimensions) / resolution_;
     }
   }
 }

@@ -104,7 +104,8 @@ namespace pcl
                                 const Eigen::Matrix4f& t, double radius) const;
         /** The larger free-space violation of the two views under \a t (TensorVerificationParams). */
         double freeSpaceViolation (const Eigen::Matrix4f& t, double margin);
-        /** max(D_combined - D) of the model points and the transformed scene points. */
+        /** max(D_combined - D) of the model points and the transformed scene points, in the best of
+          * their combined principal frame and each view's own (registeredDimensionExcess). */
         double dimensionExcess (const PointCloudN& model, const PointCloudN& scene, const Eigen::Matrix4f& t) const;
 
         shared_ptr<const PreparedScan> model_, scene_;

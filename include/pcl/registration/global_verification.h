@@ -27,7 +27,8 @@ namespace pcl
 
     /** \brief Global verification (Section 4.2; Fig. 7, steps 15 and 16): each time a view is added
       * to the registered views, the combined bounding dimensions D_L of all of them (Eq. 9, along
-      * their principal axes) may exceed the object's D by at most 4 d_res. A pairwise registration
+      * their principal axes, or along any one view's own: registeredDimensionExcess) may exceed the
+      * object's D by at most 4 d_res. A pairwise registration
       * that passed local verification can still be wrong for the object as a whole (a symmetric or
       * flat object matched the wrong way round); this catches it.
       * \ingroup registration
@@ -62,6 +63,8 @@ namespace pcl
         double resolution_;
         GlobalVerificationParams params_;
         std::vector<Eigen::Vector3d> points_;
+        /** Where each registered view's points start in points_. */
+        std::vector<std::size_t> view_starts_;
     };
   }
 }
