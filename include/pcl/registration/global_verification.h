@@ -28,9 +28,9 @@ namespace pcl
     /** \brief Global verification (Section 4.2; Fig. 7, steps 15 and 16): each time a view is added
       * to the registered views, the combined bounding dimensions D_L of all of them (Eq. 9, along
       * their principal axes, or along any one view's own: registeredDimensionExcess) may exceed the
-      * object's D by at most 4 d_res. A pairwise registration
-      * that passed local verification can still be wrong for the object as a whole (a symmetric or
-      * flat object matched the wrong way round); this catches it.
+      * object's D by at most 4 d_res. A pairwise registration that passed local verification can
+      * still be wrong for the object as a whole (a symmetric or flat object matched the wrong way
+      * round); this catches it.
       * \ingroup registration
       */
     class GlobalVerification

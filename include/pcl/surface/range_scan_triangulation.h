@@ -25,8 +25,9 @@ namespace pcl
     * would inflate the statistics (bun000 shuffled: 1.097 of the grid's area), so they are left out
     * of them, though they still face the threshold. A range sensor samples its retinal plane evenly,
     * which is how they are recognised: their longest retinal edge exceeds 1.5 median lengths
-    * (setGapRetinalMedians). Vertices that
-    * no longer belong to any triangle are kept, so that the mesh has one vertex per finite input point.
+    * (setGapRetinalMedians).
+    * Vertices that no longer belong to any triangle are kept, so that the mesh has one vertex per
+    * finite input point.
     * The faces are consistently oriented, most of the area facing the sensor; a triangle folded over
     * by noise faces away rather than breaking the orientation of its neighbours.
     * \ingroup surface
