@@ -225,15 +225,17 @@ namespace pcl
       const auto vertex = [&] (pcl::index_t i) { return (*mesh.cloud)[i].getVector3fMap ().cast<double> ().eval (); };
       std::vector<double> longest (triangles.size ()), counted;
       counted.reserve (triangles.size ());
-      double sum = 0.0, sum2 = 0.0;
       for (std::size_t t = 0; t < triangles.size (); ++t)
       {
         longest[t] = longestEdge (vertex (triangles[t][0]), vertex (triangles[t][1]), vertex (triangles[t][2]));
-        if (!in_statistics.empty () && !in_statistics[t])
-          continue;
-        counted.push_back (longest[t]);
-        sum += longest[t];
-        sum2 += longest[t] * longest[t];
+        if (in_statistics.empty () || in_statistics[t])
+          counted.push_back (longest[t]);
+      }
+      double sum = 0.0, sum2 = 0.0;
+      for (const double l : counted)
+      {
+        sum += l;
+        sum2 += l * l;
       }
       const double n = static_cast<double> (counted.size ());
       const double mean = sum / n;
