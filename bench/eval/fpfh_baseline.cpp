@@ -95,12 +95,12 @@ namespace pcl_tensor_eval
 
     watch.reset ();
     // The tensor verification's own point-to-plane ICP, with its iterations and distance.
-    pcl::KdTreeFLANN<pcl::PointNormal> tree;
-    tree.setInputCloud (model.points);
     pcl::registration::PointToPlaneIcpParams icp;
     icp.max_iterations = icp_params.icp_iterations;
     icp.max_distance = icp_params.icp_max_distance * resolution;
-    result.transform = pcl::registration::pointToPlaneIcp (*scene.points, *model.points, tree,
+    pcl::BoundedNearestSearch search (static_cast<float> (icp.max_distance));
+    search.setInputCloud (*model.points);
+    result.transform = pcl::registration::pointToPlaneIcp (*scene.points, *model.points, search,
                                                            align.getFinalTransformation (), icp).transform;
     result.icp_ms = watch.getTime ();
     return result;

@@ -105,13 +105,17 @@ namespace pcl
         return;
       if (!model_ || !scene_ || model_->fine.cloud->empty () || scene_->fine.cloud->empty ())
         PCL_TENSOR_THROW (BadArgumentException, "verification needs the prepared model and scene views");
-      model_tree_.setInputCloud (model_->fine.cloud);
+      // Cells of 2 d_res: every query asks for 1 to 6 d_res (see BoundedNearestSearch).
+      const float cell = static_cast<float> (2.0 * getResolution ());
+      model_search_ = pcl::BoundedNearestSearch (cell);
+      model_search_.setInputCloud (*model_->fine.cloud);
       model_view_.reset ();
       scene_view_.reset ();
       scene_sample_ = evenSample (*scene_->fine.cloud, params_.sample_points);
       if (params_.count_both_views)
       {
-        scene_tree_.setInputCloud (scene_->fine.cloud);
+        scene_search_ = pcl::BoundedNearestSearch (cell);
+        scene_search_.setInputCloud (*scene_->fine.cloud);
         model_sample_ = evenSample (*model_->fine.cloud, params_.sample_points);
       }
       prepared_ = true;
@@ -125,30 +129,23 @@ namespace pcl
       const auto scaled = [] (std::size_t count, const PointCloudN& points, const PointCloudN& view) {
         return static_cast<double> (count) * static_cast<double> (view.size ()) / static_cast<double> (points.size ());
       };
-      const double scene = scaled (countCorrespondences (scene_points, t, model_tree_, radius), scene_points, *scene_->fine.cloud);
+      const double scene = scaled (countCorrespondences (scene_points, t, model_search_, radius), scene_points, *scene_->fine.cloud);
       if (!params_.count_both_views)
         return scene;
-      const double model = scaled (countCorrespondences (model_points, inverseRigid (t), scene_tree_, radius), model_points,
+      const double model = scaled (countCorrespondences (model_points, inverseRigid (t), scene_search_, radius), model_points,
                                    *model_->fine.cloud);
       return 2.0 * std::min (scene, model);  // each view must bring its half (TensorVerificationParams)
     }
 
     std::size_t
     CorrespondenceRejectorTensorVerification::countCorrespondences (const PointCloudN& cloud, const Eigen::Matrix4f& t,
-                                                                   const pcl::KdTreeFLANN<pcl::PointNormal>& tree,
+                                                                   const pcl::BoundedNearestSearch& search,
                                                                    double radius)
     {
-      const float r2 = static_cast<float> (radius * radius);
-      pcl::Indices index (1);
-      std::vector<float> d2 (1);
+      const float r = static_cast<float> (radius);
       std::size_t count = 0;
-      pcl::PointNormal q;
       for (const auto& p : cloud)
-      {
-        q.getVector4fMap () = t * p.getVector4fMap ();
-        if (tree.nearestKSearch (q, 1, index, d2) == 1 && d2[0] <= r2)
-          ++count;
-      }
+        count += search.anyWithin ((t * p.getVector4fMap ()).head<3> (), r) ? 1 : 0;
       return count;
     }
 
@@ -237,7 +234,7 @@ namespace pcl
       icp.max_iterations = params_.icp_iterations;
       icp.max_distance = params_.icp_max_distance * d_res;
       icp.min_translation = 1e-3 * d_res;
-      const PointToPlaneIcpResult refined = pointToPlaneIcp (*scene_sample_, *model_->fine.cloud, model_tree_, hypothesis, icp);
+      const PointToPlaneIcpResult refined = pointToPlaneIcp (*scene_sample_, *model_->fine.cloud, model_search_, hypothesis, icp);
       result.transform = refined.transform;
       result.icp_fitness = refined.rms;
 

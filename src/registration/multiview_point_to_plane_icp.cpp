@@ -3,7 +3,7 @@
  */
 #include <pcl/registration/multiview_point_to_plane_icp.h>
 #include <pcl/common/tensor_exceptions.h>
-#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/search/bounded_nearest_search.h>
 
 #include <Eigen/Cholesky>
 
@@ -23,7 +23,7 @@ namespace pcl
       struct IcpView
       {
         const ScanMesh* mesh = nullptr;
-        std::shared_ptr<pcl::KdTreeFLANN<pcl::PointNormal>> tree;
+        std::shared_ptr<pcl::BoundedNearestSearch> search;
         std::vector<bool> usable;  ///< may be a partner: has a normal (and is not on the boundary)
         std::vector<int> sample;   ///< evenly spaced usable vertices
       };
@@ -36,12 +36,12 @@ namespace pcl
       }
 
       IcpView
-      makeIcpView (const ScanMesh& mesh, bool skip_boundary, int sample_points)
+      makeIcpView (const ScanMesh& mesh, bool skip_boundary, int sample_points, double max_distance)
       {
         IcpView v;
         v.mesh = &mesh;
-        v.tree = std::make_shared<pcl::KdTreeFLANN<pcl::PointNormal>> ();
-        v.tree->setInputCloud (mesh.cloud);
+        v.search = std::make_shared<pcl::BoundedNearestSearch> (static_cast<float> (max_distance));
+        v.search->setInputCloud (*mesh.cloud);
         const std::vector<bool> boundary = skip_boundary ? meshBoundaryVertices (mesh) : std::vector<bool> (mesh.cloud->size (), false);
         v.usable.resize (mesh.cloud->size ());
         std::vector<int> candidates;
@@ -73,18 +73,16 @@ namespace pcl
                     int var_a, int var_b, double max_distance, double min_cos, JointSystem& system)
       {
         const Eigen::Affine3d a_to_b = pose_b.inverse () * pose_a;
-        const double max_d2 = max_distance * max_distance;
-        pcl::Indices index (1);
-        std::vector<float> d2 (1);
-        pcl::PointNormal query;
+        const float radius = static_cast<float> (max_distance);
+        float d2;
         for (const int s : a.sample)
         {
           const pcl::PointNormal& p = (*a.mesh->cloud)[s];
           const Eigen::Vector3d p_a = p.getVector3fMap ().cast<double> ();
-          query.getVector3fMap () = (a_to_b * p_a).cast<float> ();
-          if (b.tree->nearestKSearch (query, 1, index, d2) != 1 || d2[0] > max_d2 || !b.usable[index[0]])
+          const int index = b.search->nearest ((a_to_b * p_a).cast<float> (), radius, d2);
+          if (index < 0 || !b.usable[index])
             continue;
-          const pcl::PointNormal& q = (*b.mesh->cloud)[index[0]];
+          const pcl::PointNormal& q = (*b.mesh->cloud)[index];
           const Eigen::Vector3d n = pose_b.linear () * q.getNormalVector3fMap ().cast<double> ();
           if ((pose_a.linear () * p.getNormalVector3fMap ().cast<double> ()).dot (n) < min_cos)
             continue;
@@ -167,7 +165,7 @@ namespace pcl
       std::vector<IcpView> icp_views (n);
       for (int i = 0; i < n; ++i)
         if (in_pair[i])
-          icp_views[i] = makeIcpView (*views[i], params.skip_boundary, params.sample_points);
+          icp_views[i] = makeIcpView (*views[i], params.skip_boundary, params.sample_points, params.max_distance * resolution);
 
       MultiviewIcpResult result;
       result.poses = initial;
@@ -232,12 +230,9 @@ namespace pcl
       std::vector<IcpView> icp_views (n);
       for (int i = 0; i < n; ++i)
         if (views[i] && (use.empty () || use[i]))
-          icp_views[i] = makeIcpView (*views[i], false, sample_points);
-      const double max_d2 = max_distance * resolution * max_distance * resolution;
+          icp_views[i] = makeIcpView (*views[i], false, sample_points, max_distance * resolution);
+      const float radius = static_cast<float> (max_distance * resolution);
       ViewPairs pairs;
-      pcl::Indices index (1);
-      std::vector<float> d2 (1);
-      pcl::PointNormal query;
       for (int i = 0; i < n; ++i)
         for (int j = i + 1; j < n; ++j)
         {
@@ -251,9 +246,8 @@ namespace pcl
           std::size_t near = 0;
           for (const int s : a.sample)
           {
-            query.getVector3fMap () = (a_to_b * (*a.mesh->cloud)[s].getVector3fMap ().cast<double> ()).cast<float> ();
-            if (b.tree->nearestKSearch (query, 1, index, d2) == 1 && d2[0] <= max_d2)
-              ++near;
+            const Eigen::Vector3f query = (a_to_b * (*a.mesh->cloud)[s].getVector3fMap ().cast<double> ()).cast<float> ();
+            near += b.search->anyWithin (query, radius) ? 1 : 0;
           }
           if (!a.sample.empty () && static_cast<double> (near) >= min_fraction * static_cast<double> (a.sample.size ()))
             pairs.emplace_back (i, j);

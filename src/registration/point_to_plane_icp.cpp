@@ -24,26 +24,25 @@ namespace pcl
 
       Step
       solveStep (const pcl::PointCloud<pcl::PointNormal>& source, const pcl::PointCloud<pcl::PointNormal>& target,
-                 const pcl::KdTreeFLANN<pcl::PointNormal>& tree, const Eigen::Matrix4f& t, double max_distance)
+                 const pcl::BoundedNearestSearch& search, const Eigen::Matrix4f& t, double max_distance)
       {
         Eigen::Matrix<double, 6, 6> a = Eigen::Matrix<double, 6, 6>::Zero ();
         Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero ();
-        const float max_d2 = static_cast<float> (max_distance * max_distance);
-        pcl::Indices index (1);
-        std::vector<float> d2 (1);
-        pcl::PointNormal q;
+        const float radius = static_cast<float> (max_distance);
         Step step;
         double sum2 = 0.0;
         for (const auto& p : source)
         {
-          q.getVector4fMap () = t * p.getVector4fMap ();
-          if (tree.nearestKSearch (q, 1, index, d2) != 1 || d2[0] > max_d2)
+          const Eigen::Vector3f q = (t * p.getVector4fMap ()).head<3> ();
+          float d2;
+          const int index = search.nearest (q, radius, d2);
+          if (index < 0)
             continue;
-          const auto& m = target[index[0]];
+          const auto& m = target[index];
           const Eigen::Vector3d n = m.getNormalVector3fMap ().cast<double> ();
           if (!n.allFinite () || n.squaredNorm () == 0.0)
             continue;  // no tangent plane: a vertex on no face, or a cloud without normals
-          const Eigen::Vector3d s = q.getVector3fMap ().cast<double> ();
+          const Eigen::Vector3d s = q.cast<double> ();
           const double r = (s - m.getVector3fMap ().cast<double> ()).dot (n);
           Eigen::Matrix<double, 6, 1> j;
           j << s.cross (n), n;
@@ -66,7 +65,7 @@ namespace pcl
 
     PointToPlaneIcpResult
     pointToPlaneIcp (const pcl::PointCloud<pcl::PointNormal>& source, const pcl::PointCloud<pcl::PointNormal>& target,
-                     const pcl::KdTreeFLANN<pcl::PointNormal>& tree, const Eigen::Matrix4f& initial,
+                     const pcl::BoundedNearestSearch& search, const Eigen::Matrix4f& initial,
                      const PointToPlaneIcpParams& params)
     {
       if (!(params.max_distance > 0.0) || params.max_iterations < 0)
@@ -75,7 +74,7 @@ namespace pcl
       result.transform = initial;
       for (int it = 0; it < params.max_iterations; ++it)
       {
-        const Step step = solveStep (source, target, tree, result.transform, params.max_distance);
+        const Step step = solveStep (source, target, search, result.transform, params.max_distance);
         result.pairs = step.pairs;
         result.rms = step.rms;
         if (!step.solved)

@@ -6,10 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <limits>
 #include <type_traits>
-#include <unordered_map>
 
 namespace pcl
 {
@@ -62,42 +60,76 @@ namespace pcl
     std::vector<int>
     borderHops (std::size_t vertex_count, const std::vector<pcl::Vertices>& polygons)
     {
-      std::unordered_map<std::uint64_t, int> edge_uses;
-      edge_uses.reserve (polygons.size () * 3);
-      auto key = [] (std::uint32_t a, std::uint32_t b) {
-        return (static_cast<std::uint64_t> (std::min (a, b)) << 32) | std::max (a, b);
-      };
-      std::vector<std::vector<std::uint32_t>> neighbours (vertex_count);
+      // Each edge is listed under its lower vertex; sorting those short lists finds the edges used
+      // once (a hash map of edges cost more than the rest of the z-buffer).
+      std::vector<std::uint32_t> start (vertex_count + 1, 0);
       for (const auto& poly : polygons)
         for (int k = 0; k < 3; ++k)
-        {
-          const std::uint32_t a = poly.vertices[k], b = poly.vertices[(k + 1) % 3];
-          if (++edge_uses[key (a, b)] == 1)
-          {
-            neighbours[a].push_back (b);
-            neighbours[b].push_back (a);
-          }
-        }
-      std::vector<int> hops (vertex_count, std::numeric_limits<int>::max ());
-      std::deque<std::uint32_t> queue;
-      for (const auto& e : edge_uses)
-        if (e.second == 1)
-          for (const std::uint32_t v : {static_cast<std::uint32_t> (e.first >> 32), static_cast<std::uint32_t> (e.first)})
-            if (hops[v] != 0)
-            {
-              hops[v] = 0;
-              queue.push_back (v);
-            }
-      while (!queue.empty ())
+          ++start[std::min (poly.vertices[k], poly.vertices[(k + 1) % 3]) + 1];
+      for (std::size_t v = 0; v < vertex_count; ++v)
+        start[v + 1] += start[v];
+      std::vector<std::uint32_t> upper (start.back ());
       {
-        const std::uint32_t v = queue.front ();
-        queue.pop_front ();
-        for (const std::uint32_t n : neighbours[v])
+        std::vector<std::uint32_t> fill (start.begin (), start.end () - 1);
+        for (const auto& poly : polygons)
+          for (int k = 0; k < 3; ++k)
+          {
+            const std::uint32_t a = poly.vertices[k], b = poly.vertices[(k + 1) % 3];
+            upper[fill[std::min (a, b)]++] = std::max (a, b);
+          }
+      }
+      // The distinct edges, and which of them lie on the border.
+      std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+      edges.reserve (upper.size () / 2 + 1);
+      std::vector<int> hops (vertex_count, std::numeric_limits<int>::max ());
+      std::vector<std::uint32_t> queue;
+      std::vector<std::uint32_t> degree (vertex_count + 1, 0);
+      for (std::uint32_t a = 0; a < vertex_count; ++a)
+      {
+        std::sort (upper.begin () + start[a], upper.begin () + start[a + 1]);
+        for (std::uint32_t i = start[a]; i < start[a + 1];)
+        {
+          std::uint32_t j = i + 1;
+          while (j < start[a + 1] && upper[j] == upper[i])
+            ++j;
+          const std::uint32_t b = upper[i];
+          edges.emplace_back (a, b);
+          ++degree[a + 1];
+          ++degree[b + 1];
+          if (j - i == 1)
+            for (const std::uint32_t v : {a, b})
+              if (hops[v] != 0)
+              {
+                hops[v] = 0;
+                queue.push_back (v);
+              }
+          i = j;
+        }
+      }
+      for (std::size_t v = 0; v < vertex_count; ++v)
+        degree[v + 1] += degree[v];
+      std::vector<std::uint32_t> neighbours (degree.back ());
+      {
+        std::vector<std::uint32_t> fill (degree.begin (), degree.end () - 1);
+        for (const auto& e : edges)
+        {
+          neighbours[fill[e.first]++] = e.second;
+          neighbours[fill[e.second]++] = e.first;
+        }
+      }
+      // Breadth first from every border vertex at once.
+      for (std::size_t head = 0; head < queue.size (); ++head)
+      {
+        const std::uint32_t v = queue[head];
+        for (std::uint32_t k = degree[v]; k < degree[v + 1]; ++k)
+        {
+          const std::uint32_t n = neighbours[k];
           if (hops[n] > hops[v] + 1)
           {
             hops[n] = hops[v] + 1;
             queue.push_back (n);
           }
+        }
       }
       return hops;
     }

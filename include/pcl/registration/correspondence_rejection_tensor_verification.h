@@ -5,9 +5,9 @@
 
 #include <pcl/common/object_dimensions.h>
 #include <pcl/features/tensor_descriptor.h>
-#include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/registration/correspondence_rejection.h>
 #include <pcl/registration/tensor_verification.h>
+#include <pcl/search/bounded_nearest_search.h>
 #include <pcl/surface/range_view_projection.h>
 #include <pcl/surface/scan_preparation.h>
 
@@ -91,12 +91,12 @@ namespace pcl
       private:
         using PointCloudN = pcl::PointCloud<pcl::PointNormal>;
 
-        /** Build the model's search tree and the scene's sample (ICP's input), once per input; with
-          * count_both_views also the scene's tree and the model's sample. */
+        /** Build the model's search and the scene's sample (ICP's input), once per input; with
+          * count_both_views also the scene's search and the model's sample. */
         void prepare ();
-        /** Points of \a cloud, under \a t, with a point of \a tree's cloud within \a radius. */
+        /** Points of \a cloud, under \a t, with a point of \a search's cloud within \a radius. */
         static std::size_t countCorrespondences (const PointCloudN& cloud, const Eigen::Matrix4f& t,
-                                                 const pcl::KdTreeFLANN<pcl::PointNormal>& tree, double radius);
+                                                 const pcl::BoundedNearestSearch& search, double radius);
         /** Correspondences within \a radius under \a t, counted on \a scene_points (and with
           * count_both_views on \a model_points: twice the smaller count), scaled from those points
           * (the samples or the whole views) to the whole views. */
@@ -115,7 +115,7 @@ namespace pcl
         std::size_t max_accepted_{0};
         bool prepared_{false};
 
-        pcl::KdTreeFLANN<pcl::PointNormal> model_tree_, scene_tree_;
+        pcl::BoundedNearestSearch model_search_, scene_search_;
         std::unique_ptr<RangeViewProjection> model_view_, scene_view_;
         PointCloudN::Ptr scene_sample_{new PointCloudN}, model_sample_{new PointCloudN};
         std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> accepted_transforms_;

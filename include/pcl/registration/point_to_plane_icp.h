@@ -3,8 +3,8 @@
  */
 #pragma once
 
-#include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/point_cloud.h>
+#include <pcl/search/bounded_nearest_search.h>
 #include <pcl/point_types.h>
 
 #include <Eigen/Core>
@@ -37,15 +37,16 @@ namespace pcl
       * (NaN or zero), and solves the linearised
       * point-to-plane least squares for a small rotation and a translation.
       * \param[in] source points to move (e.g. a sample of the scene)
-      * \param[in] target points with normals (the model), searched through \a tree
-      * \param[in] tree a kd-tree built on \a target
+      * \param[in] target points with normals (the model), searched through \a search
+      * \param[in] search the nearest-neighbour search built on \a target (best with cells near
+      *            \a params.max_distance)
       * \param[in] initial the starting transform of the source
       * \param[in] params stopping rules
       * \ingroup registration
       */
     PointToPlaneIcpResult
     pointToPlaneIcp (const pcl::PointCloud<pcl::PointNormal>& source, const pcl::PointCloud<pcl::PointNormal>& target,
-                     const pcl::KdTreeFLANN<pcl::PointNormal>& tree, const Eigen::Matrix4f& initial,
+                     const pcl::BoundedNearestSearch& search, const Eigen::Matrix4f& initial,
                      const PointToPlaneIcpParams& params);
   }
 }

@@ -1,0 +1,162 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#include <pcl/search/bounded_nearest_search.h>
+#include <pcl/common/tensor_exceptions.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pcl
+{
+  BoundedNearestSearch::BoundedNearestSearch (float cell_size) : wanted_cell_ (cell_size), cell_ (cell_size)
+  {
+    if (!(cell_size > 0.0f) || !std::isfinite (cell_size))
+      PCL_TENSOR_THROW (BadArgumentException, "BoundedNearestSearch: the cell size must be positive and finite, got " << cell_size);
+  }
+
+  void
+  BoundedNearestSearch::setPoints (const std::vector<Eigen::Vector3f>& points)
+  {
+    if (points.size () >= static_cast<std::size_t> (std::numeric_limits<std::int32_t>::max ()))
+      PCL_TENSOR_THROW (BadArgumentException, "BoundedNearestSearch: " << points.size () << " points are too many");
+    entries_.clear ();
+    cell_start_.clear ();
+    dims_[0] = dims_[1] = dims_[2] = 0;
+    Eigen::Vector3f lo = Eigen::Vector3f::Constant (std::numeric_limits<float>::max ()), hi = -lo;
+    std::size_t finite = 0;
+    for (const auto& p : points)
+      if (p.allFinite ())
+      {
+        lo = lo.cwiseMin (p);
+        hi = hi.cwiseMax (p);
+        ++finite;
+      }
+    if (finite == 0)
+      return;
+
+    // The dense grid is bounded by the point count: a surface fills few cells of its bounding box.
+    const double max_cells = std::max (4096.0, 4.0 * static_cast<double> (finite));
+    const Eigen::Vector3d extent = (hi - lo).cast<double> ();
+    double cell = wanted_cell_;
+    for (;;)
+    {
+      double cells = 1.0;
+      for (int k = 0; k < 3; ++k)
+        cells *= std::floor (extent[k] / cell) + 1.0;
+      if (cells <= max_cells)
+        break;
+      cell *= std::max (1.01, std::cbrt (cells / max_cells));
+    }
+    cell_ = static_cast<float> (cell);
+    inv_cell_ = static_cast<float> (1.0 / cell);
+    origin_ = lo;
+    // Float rounding of a distance near the radius must not decide which cells are scanned.
+    slack_ = 1e-6f * std::max (lo.cwiseAbs ().maxCoeff (), hi.cwiseAbs ().maxCoeff ());
+    for (int k = 0; k < 3; ++k)
+      dims_[k] = static_cast<int> (std::floor (extent[k] / cell)) + 1;
+
+    const auto cellOf = [this] (const Eigen::Vector3f& p) {
+      std::size_t c = 0;
+      for (int k = 2; k >= 0; --k)
+      {
+        const int i = std::min (static_cast<int> ((p[k] - origin_[k]) * inv_cell_), dims_[k] - 1);
+        c = c * static_cast<std::size_t> (dims_[k]) + static_cast<std::size_t> (std::max (i, 0));
+      }
+      return c;
+    };
+    const std::size_t n_cells = static_cast<std::size_t> (dims_[0]) * dims_[1] * dims_[2];
+    cell_start_.assign (n_cells + 1, 0);
+    std::vector<std::uint32_t> cell_of (points.size ());
+    for (std::size_t i = 0; i < points.size (); ++i)
+      if (points[i].allFinite ())
+        ++cell_start_[(cell_of[i] = static_cast<std::uint32_t> (cellOf (points[i]))) + 1];
+    for (std::size_t c = 0; c < n_cells; ++c)
+      cell_start_[c + 1] += cell_start_[c];
+    entries_.resize (finite);
+    std::vector<std::uint32_t> fill (cell_start_.begin (), cell_start_.end () - 1);
+    for (std::size_t i = 0; i < points.size (); ++i)
+      if (points[i].allFinite ())
+        entries_[fill[cell_of[i]]++] = {points[i].x (), points[i].y (), points[i].z (), static_cast<std::int32_t> (i)};
+  }
+
+  bool
+  BoundedNearestSearch::cellRange (const Eigen::Vector3f& query, float radius, int lo[3], int hi[3]) const
+  {
+    if (entries_.empty () || !query.allFinite () || !(radius >= 0.0f))
+      return false;
+    // A point that the float distance test accepts may lie a rounding error beyond the radius.
+    const double reach = static_cast<double> (radius) * (1.0 + 1e-5) + slack_;
+    for (int k = 0; k < 3; ++k)
+    {
+      // In double and clamped before the cast: a far query must not overflow the int.
+      const double a = std::floor ((static_cast<double> (query[k]) - reach - origin_[k]) * inv_cell_);
+      const double b = std::floor ((static_cast<double> (query[k]) + reach - origin_[k]) * inv_cell_);
+      if (b < 0.0 || a >= dims_[k])
+        return false;
+      lo[k] = static_cast<int> (std::max (a, 0.0));
+      hi[k] = static_cast<int> (std::min (b, static_cast<double> (dims_[k] - 1)));
+    }
+    return true;
+  }
+
+  template <typename Visit> bool
+  BoundedNearestSearch::forEachRow (const Eigen::Vector3f& query, float radius, Visit&& visit) const
+  {
+    int lo[3], hi[3];
+    if (!cellRange (query, radius, lo, hi))
+      return false;
+    for (int z = lo[2]; z <= hi[2]; ++z)
+      for (int y = lo[1]; y <= hi[1]; ++y)
+      {
+        const std::size_t row = (static_cast<std::size_t> (z) * dims_[1] + y) * dims_[0];
+        const Entry* first = entries_.data () + cell_start_[row + lo[0]];
+        const Entry* last = entries_.data () + cell_start_[row + hi[0] + 1];
+        if (visit (first, last))
+          return true;
+      }
+    return false;
+  }
+
+  int
+  BoundedNearestSearch::nearest (const Eigen::Vector3f& query, float radius, float& sqr_distance) const
+  {
+    const float qx = query.x (), qy = query.y (), qz = query.z ();
+    float best = radius * radius;
+    std::int32_t best_index = -1;
+    forEachRow (query, radius, [&] (const Entry* first, const Entry* last) {
+      for (const Entry* e = first; e != last; ++e)
+      {
+        const float dx = e->x - qx, dy = e->y - qy, dz = e->z - qz;
+        const float d2 = dx * dx + dy * dy + dz * dz;
+        // Rows are not in index order: a tie goes to the lower index explicitly.
+        if (d2 < best || (d2 == best && (best_index < 0 || e->index < best_index)))
+        {
+          best = d2;
+          best_index = e->index;
+        }
+      }
+      return false;
+    });
+    if (best_index >= 0)
+      sqr_distance = best;
+    return best_index;
+  }
+
+  bool
+  BoundedNearestSearch::anyWithin (const Eigen::Vector3f& query, float radius) const
+  {
+    const float qx = query.x (), qy = query.y (), qz = query.z ();
+    const float r2 = radius * radius;
+    return forEachRow (query, radius, [&] (const Entry* first, const Entry* last) {
+      for (const Entry* e = first; e != last; ++e)
+      {
+        const float dx = e->x - qx, dy = e->y - qy, dz = e->z - qz;
+        if (dx * dx + dy * dy + dz * dz <= r2)
+          return true;
+      }
+      return false;
+    });
+  }
+}
