@@ -143,7 +143,7 @@ TEST (BoundedNearestSearch, NonFiniteInputAndQueries)
   EXPECT_EQ (empty.size (), 0u);
   EXPECT_EQ (empty.nearest ({0, 0, 0}, 1.0f, d2), -1);
   EXPECT_THROW (pcl::BoundedNearestSearch (0.0f), pcl::BadArgumentException);
-  EXPECT_THROW (pcl::BoundedNearestSearch (std::numeric_limits<float>::infinity ()), pcl::BadArgumentException);
+  EXPECT_THROW (pcl::BoundedNearestSearch {std::numeric_limits<float>::infinity ()}, pcl::BadArgumentException);
 }
 
 // Two clusters far apart would need a huge dense grid at the asked cell: the cells grow, the

@@ -55,10 +55,11 @@ namespace pcl
         return -sensor_pose.linear ().col (2);
       case Model::pushbroom:
       {
-        // Back to the axis within the point's own plane x = const.
-        Eigen::Vector3d s = sensor_pose.inverse () * p;
-        s.x () = 0.0;
-        return -(sensor_pose.linear () * s).normalized ();
+        // Back to the axis within the point's own plane x = const: the offset from the sensor less
+        // its part along the sweep axis (the pose is rigid, so no inverse is needed; this runs per vertex).
+        const Eigen::Vector3d d = p - sensor_pose.translation ();
+        const Eigen::Vector3d sweep = sensor_pose.linear ().col (0);
+        return -(d - sweep * sweep.dot (d)).normalized ();
       }
       case Model::perspective:
         break;

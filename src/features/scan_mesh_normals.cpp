@@ -3,7 +3,7 @@
  */
 #include <pcl/features/scan_mesh_normals.h>
 #include <pcl/common/tensor_exceptions.h>
-#include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/search/bounded_nearest_search.h>
 
 #include <limits>
 
@@ -75,7 +75,7 @@ namespace pcl
   }
 
   void
-  ScanMeshNormalEstimation::compute (ScanMesh& reduced, ScanMesh& fine) const
+  ScanMeshNormalEstimation::compute (ScanMesh& reduced, ScanMesh& fine, double resolution) const
   {
     requireFaces (reduced, "reduced");
     requireFaces (fine, "fine");
@@ -89,23 +89,25 @@ namespace pcl
       return;
     }
 
-    pcl::KdTreeFLANN<pcl::PointNormal> tree;
-    tree.setInputCloud (fine.cloud);
-    const double radius = radius_resolutions_ * meshResolution (fine);
-    pcl::Indices nearest (1), neighbours;
-    std::vector<float> d2 (1), neighbour_d2;
-    // A reduced vertex whose fine neighbourhood gives no normal (its nearest fine vertex is isolated
-    // and alone within the radius) keeps approach (a): M'_i's own faces always give one.
+    const float radius = static_cast<float> (radius_resolutions_ * (resolution > 0.0 ? resolution : meshResolution (fine)));
+    pcl::BoundedNearestSearch search (radius);
+    search.setInputCloud (*fine.cloud);
+    std::vector<int> neighbours;
+    // A reduced vertex whose fine neighbourhood gives no normal (no fine vertex within the radius,
+    // or only isolated ones) keeps approach (a): M'_i's own faces always give one.
     std::vector<Eigen::Vector3d> sums = areaWeightedSums (reduced);
     for (std::size_t i = 0; i < reduced.cloud->size (); ++i)
     {
-      // The corresponding vertex of M_i is the nearest one; its normal is the area-weighted
-      // average over the fine faces within the neighbourhood (Section 2, second approach).
-      if (tree.nearestKSearch ((*reduced.cloud)[i], 1, nearest, d2) < 1)
+      // The corresponding vertex of M_i is the nearest one (reduction keeps vertices where they
+      // were); its normal is the area-weighted average over the fine faces within the neighbourhood
+      // (Section 2, second approach).
+      float d2;
+      const int nearest = search.nearest ((*reduced.cloud)[i].getVector3fMap (), radius, d2);
+      if (nearest < 0)
         continue;
-      tree.radiusSearch ((*fine.cloud)[nearest[0]], radius, neighbours, neighbour_d2);
+      search.radiusSearch ((*fine.cloud)[nearest].getVector3fMap (), radius, neighbours);
       Eigen::Vector3d sum = Eigen::Vector3d::Zero ();
-      for (const auto j : neighbours)
+      for (const int j : neighbours)
         sum += fine_sums[j];
       if (sum.norm () > 0.0)
         sums[i] = sum;

@@ -159,4 +159,23 @@ namespace pcl
       return false;
     });
   }
+
+  std::size_t
+  BoundedNearestSearch::radiusSearch (const Eigen::Vector3f& query, float radius, std::vector<int>& indices) const
+  {
+    indices.clear ();
+    const float qx = query.x (), qy = query.y (), qz = query.z ();
+    const float r2 = radius * radius;
+    forEachRow (query, radius, [&] (const Entry* first, const Entry* last) {
+      for (const Entry* e = first; e != last; ++e)
+      {
+        const float dx = e->x - qx, dy = e->y - qy, dz = e->z - qz;
+        if (dx * dx + dy * dy + dz * dz <= r2)
+          indices.push_back (e->index);
+      }
+      return false;
+    });
+    std::sort (indices.begin (), indices.end ());
+    return indices.size ();
+  }
 }

@@ -78,8 +78,9 @@ namespace pcl
       return i;
     }
 
-    /** The triangles whose vertex-connected component has at least \a min_faces faces. */
-    std::vector<pcl::Vertices>
+    /** The triangles whose vertex-connected component has at least \a min_faces faces, as a flat
+      * index list (no copy of each triangle's index vector). */
+    std::vector<unsigned int>
     largeComponents (const ScanMesh& mesh, std::size_t min_faces)
     {
       std::vector<std::size_t> parent (mesh.cloud->size ());
@@ -90,22 +91,20 @@ namespace pcl
       std::vector<std::size_t> faces_in (mesh.cloud->size (), 0);
       for (const auto& poly : mesh.polygons)
         ++faces_in[root (parent, static_cast<std::size_t> (poly.vertices[0]))];
-      std::vector<pcl::Vertices> kept;
-      kept.reserve (mesh.polygons.size ());
+      std::vector<unsigned int> indices;
+      indices.reserve (3 * mesh.polygons.size ());
       for (const auto& poly : mesh.polygons)
         if (faces_in[root (parent, static_cast<std::size_t> (poly.vertices[0]))] >= min_faces)
-          kept.push_back (poly);
-      return kept;
+          for (const auto v : poly.vertices)
+            indices.push_back (static_cast<unsigned int> (v));
+      return indices;
     }
 
+    /** Garland-Heckbert collapses of the triangles \a indices of \a vertices down to \a target_faces. */
     void
-    reduceWithMeshoptimizer (const ScanMesh& fine, std::size_t target_faces, ScanMesh& out)
+    reduceWithMeshoptimizer (std::vector<unsigned int> indices, const pcl::PointCloud<pcl::PointNormal>& vertices,
+                             std::size_t target_faces, ScanMesh& out)
     {
-      std::vector<unsigned int> indices;
-      indices.reserve (3 * fine.polygons.size ());
-      for (const auto& poly : fine.polygons)
-        for (const auto v : poly.vertices)
-          indices.push_back (static_cast<unsigned int> (v));
       // One call can stop short of the target when its ranking of collapses runs dry (3 of the 10
       // bunny scans: 443-676 faces); calling again on its own output reclassifies the vertices and
       // goes on. The error bound is relative to the mesh extent; 1 means "stop only at the target".
@@ -114,7 +113,7 @@ namespace pcl
       {
         std::vector<unsigned int> simplified (indices.size ());
         const std::size_t count = meshopt_simplify (simplified.data (), indices.data (), indices.size (),
-                                                    &(*fine.cloud)[0].x, fine.cloud->size (), sizeof (pcl::PointNormal),
+                                                    &vertices[0].x, vertices.size (), sizeof (pcl::PointNormal),
                                                     target_indices, 1.0f, 0, nullptr);
         const bool stalled = (count == indices.size ());
         simplified.resize (count);
@@ -122,7 +121,7 @@ namespace pcl
         if (stalled)
           break;
       }
-      compactMesh (indices, *fine.cloud, out);
+      compactMesh (indices, vertices, out);
     }
 
   }
@@ -148,17 +147,15 @@ namespace pcl
   {
     if (input.polygons.empty ())
       PCL_TENSOR_THROW (InvalidScanException, "cannot reduce a mesh without faces");
-    ScanMesh fine;
-    fine.cloud = input.cloud;
-    fine.viewpoint = input.viewpoint;
-    fine.polygons = largeComponents (input, static_cast<std::size_t> (min_component_fraction_ * static_cast<double> (input.polygons.size ())));
-    const std::size_t faces = fine.polygons.size ();
+    std::vector<unsigned int> indices =
+        largeComponents (input, static_cast<std::size_t> (min_component_fraction_ * static_cast<double> (input.polygons.size ())));
+    const std::size_t faces = indices.size () / 3;
     ScanMesh out;
     // At or under the target no edge collapses; the mesh is only cleaned, as every output is.
-    reduceWithMeshoptimizer (fine, static_cast<std::size_t> (target_faces_), out);
+    reduceWithMeshoptimizer (std::move (indices), *input.cloud, static_cast<std::size_t> (target_faces_), out);
     if (out.polygons.empty ())
       PCL_TENSOR_THROW (InvalidScanException, "quadric simplification of " << faces << " faces left no face");
-    out.viewpoint = fine.viewpoint;
+    out.viewpoint = input.viewpoint;
     reduced = std::move (out);
   }
 }

@@ -35,7 +35,7 @@ namespace pcl
     stages.triangulation.triangulate (cloud, scan.fine);
     scan.resolution = meshResolution (scan.fine);
     stages.reduction.reduce (scan.fine, scan.reduced);
-    stages.normals.compute (scan.reduced, scan.fine);
+    stages.normals.compute (scan.reduced, scan.fine, scan.resolution);
     return scan;
   }
 

@@ -30,7 +30,7 @@ namespace pcl
       pushbroom
     };
 
-    /** \brief Sensor frame expressed in the scan frame (columns: sensor axes; translation: origin). */
+    /** \brief Sensor frame expressed in the scan frame, a rigid transform (columns: sensor axes; translation: origin). */
     Eigen::Affine3d sensor_pose = Eigen::Affine3d::Identity ();
     /** \brief How the lines of sight run. */
     Model model = Model::perspective;

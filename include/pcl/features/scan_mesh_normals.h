@@ -41,9 +41,12 @@ namespace pcl
       /** \brief Fill in the normals of \a reduced with the configured method, and those of \a fine by
         * face average with either method (Method::FINE_NEIGHBOURHOOD reads them; point-to-plane
         * verification needs them).
+        * \param[in,out] reduced M'_i
+        * \param[in,out] fine M_i
+        * \param[in] resolution d_res of \a fine if the caller already has it (meshResolution()); 0 computes it
         * \throw InvalidScanException when a mesh has no faces
         */
-      void compute (ScanMesh& reduced, ScanMesh& fine) const;
+      void compute (ScanMesh& reduced, ScanMesh& fine, double resolution = 0.0) const;
 
     private:
       Method method_{Method::FINE_NEIGHBOURHOOD};

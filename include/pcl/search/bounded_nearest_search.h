@@ -67,6 +67,11 @@ namespace pcl
       /** \brief Whether any indexed point lies within \a radius of \a query (stops at the first found). */
       bool anyWithin (const Eigen::Vector3f& query, float radius) const;
 
+      /** \brief Every indexed point within \a radius of \a query, in ascending index order (so that
+        * sums over them do not depend on the grid).
+        * \return the number of points found */
+      std::size_t radiusSearch (const Eigen::Vector3f& query, float radius, std::vector<int>& indices) const;
+
       /** \brief Number of points indexed (the finite ones). */
       std::size_t size () const { return entries_.size (); }
 
