@@ -13,6 +13,9 @@
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
 #include <pcl/io/ply_io.h>
+#include <pcl/io/stanford_conf.h>
+#include <pcl/registration/multiview_point_to_plane_icp.h>
+#include <pcl/registration/registration_error.h>
 #include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/simulation/example_object.h>
 #include <pcl/io/scan_mesh_io.h>
@@ -22,6 +25,7 @@
 #include <algorithm>
 #include <ctime>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 using namespace pcl_tensor_eval;
@@ -36,6 +40,8 @@ namespace
     std::vector<double> voxel_res{1.0};
     std::string out = "/tmp/eval_integration_model.ply";
     bool synthetic = false;  ///< the 26 synthetic views of the built-in object instead of the scans
+    std::string model;       ///< a model already made (pcl_tensor_model -o), scored instead of integrating
+    std::string poses;       ///< the estimated poses it was made with (pcl_tensor_model's .conf)
     pcl::VolumetricIntegrationParams params;
   };
 
@@ -54,7 +60,12 @@ namespace
                  "  --trunc T           truncation in voxels (default %g)\n"
                  "  --ramp E            border weight ramp in edges (default %g)\n"
                  "  --min-piece F       drop surface pieces under this fraction of the triangles (default %g)\n"
-                 "  --out PLY           model of the last run (default %s)\n",
+                 "  --out PLY           model of the last run (default %s)\n"
+                 "  --model PLY         score this model (e.g. pcl_tensor_model's) instead of integrating: it is moved\n"
+                 "                      into the reference's frame by the frame that fits its poses best to --conf\n"
+                 "                      (pcl::bestFitCommonFrame), and by view 0's true pose, and scored both ways\n"
+                 "  --poses CONF        the estimated poses the model was made with (default: the model's name with .conf)\n"
+                 "                      (with --synthetic: --conf is pcl_tensor_views' views.conf, the reference the built-in object)\n",
                  name, d.data.c_str (), d.params.truncation_voxels, d.params.border_ramp_edges,
                  d.params.min_component_fraction, d.out.c_str ());
   }
@@ -110,6 +121,64 @@ namespace
     return static_cast<double> (unseen) / reference.cloud->size ();
   }
 
+  /** The estimated poses of \a scans, read from \a path and matched to the scans by file name. */
+  pcl::registration::ViewPoses
+  estimatedPoses (const EvalViews& scans, const std::string& path)
+  {
+    const auto entries = pcl::io::loadStanfordConf (path);
+    pcl::registration::ViewPoses poses;
+    for (const auto& s : scans)
+    {
+      const auto it = std::find_if (entries.begin (), entries.end (), [&] (const pcl::io::StanfordConfEntry& e)
+                                    { return std::filesystem::path (e.file).stem ().string () == s.name; });
+      if (it == entries.end ())
+        throw std::runtime_error ("no pose for scan '" + s.name + "' in " + path);
+      poses.push_back (it->pose ());
+    }
+    return poses;
+  }
+
+  void
+  printDistances (const char* label, const pcl::ScanMesh& model, const Eigen::Affine3d& frame, const pcl::ScanMesh& reference,
+                  double resolution)
+  {
+    pcl::ScanMesh moved = model;
+    moved.cloud.reset (new pcl::PointCloud<pcl::PointNormal> (*model.cloud));
+    for (auto& p : *moved.cloud)
+      p.getVector3fMap () = (frame * p.getVector3fMap ().cast<double> ()).cast<float> ();
+    const auto accuracy = distances (moved, reference, resolution);
+    const auto coverage = distances (reference, moved, resolution);
+    std::printf ("  %-28s model -> reference median %.3f p95 %.3f d_res; reference -> model median %.3f p95 %.3f d_res\n", label,
+                 percentile (accuracy, 0.5), percentile (accuracy, 0.95), percentile (coverage, 0.5), percentile (coverage, 0.95));
+  }
+
+  /** Scores a model made from \a scans at estimated poses against \a reference, in two common frames. */
+  void
+  scoreModel (const Options& o, const EvalViews& scans, const pcl::ScanMesh& reference)
+  {
+    const std::string poses_path = o.poses.empty () ? std::filesystem::path (o.model).replace_extension (".conf").string () : o.poses;
+    const auto estimates = estimatedPoses (scans, poses_path);
+    std::vector<const pcl::PointCloud<pcl::PointXYZ>*> clouds;
+    pcl::registration::ViewPoses truth;
+    double resolution = 0.0;
+    for (const auto& s : scans)
+    {
+      clouds.push_back (s.cloud.get ());
+      truth.push_back (s.pose);
+      pcl::RangeScanTriangulation triangulation;
+      triangulation.setViewpoint (s.viewpoint);
+      pcl::ScanMesh mesh;
+      triangulation.triangulate (*s.cloud, mesh);
+      resolution += pcl::meshResolution (mesh) / scans.size ();
+    }
+    const pcl::ScanMesh model = pcl::io::loadScanMesh (o.model);
+    std::printf ("%s (%zu vertices, %zu triangles), poses %s, d_res %.4f mm\n", o.model.c_str (), model.cloud->size (),
+                 model.polygons.size (), poses_path.c_str (), resolution * 1e3);
+    const Eigen::Affine3d best = pcl::bestFitCommonFrame (clouds, estimates, truth);
+    printDistances ("best-fit common frame:", model, best, reference, resolution);
+    printDistances ("view 0 at its true pose:", model, scans.front ().pose * estimates.front ().inverse (), reference, resolution);
+  }
+
   Eigen::Vector3f
   extent (const pcl::ScanMesh& mesh)
   {
@@ -143,12 +212,21 @@ main (int argc, char** argv)
   pcl::console::parse_argument (argc, argv, "--min-piece", o.params.min_component_fraction);
   pcl::console::parse_x_arguments (argc, argv, "--voxel-res", o.voxel_res);
   o.synthetic = pcl::console::find_switch (argc, argv, "--synthetic");
+  pcl::console::parse_argument (argc, argv, "--model", o.model);
+  pcl::console::parse_argument (argc, argv, "--poses", o.poses);
   pcl::console::setVerbosityLevel (pcl::console::L_ERROR);
 
   try
   {
     pcl::StopWatch watch;
     const pcl::ScanMesh object = o.synthetic ? pcl::makeExampleObject () : pcl::ScanMesh ();
+    if (!o.model.empty ())
+    {
+      // The views the model was made from, with their true poses (--conf: pcl_tensor_views' views.conf
+      // for synthetic views of the built-in object).
+      scoreModel (o, loadStanfordViews (o.conf), o.synthetic ? object : pcl::io::loadScanMesh (o.reference));
+      return 0;
+    }
     EvalViews scans = o.synthetic ? makeSyntheticViews (object, pcl::SyntheticViewParams ()) : loadStanfordViews (o.conf);
     const double load_ms = watch.getTime ();
 

@@ -103,6 +103,7 @@ namespace
     }
     const auto pairwise_errors = poseErrors (views, pairwise, registered, result.reference, result.resolution);
     const auto global_errors = poseErrors (views, global, registered, result.reference, result.resolution);
+    const auto best_frame_errors = poseErrorsInBestFrame (views, global, registered, result.resolution);
     std::vector<ViewPoseError> lum_errors (views.size ());
     double lum_ms = 0.0;
     if (options.lum && result.registeredCount () > 1)
@@ -116,15 +117,16 @@ namespace
     std::filesystem::create_directories (options.out);
     std::ofstream csv (options.out + "/multiview_" + label + ".csv");
     csv << "view,registered,reference,hypotheses,globally_refused,global_excess_res,pairwise_rot_deg,pairwise_trans_res,"
-           "global_rot_deg,global_trans_res,lum_rot_deg,lum_trans_res,prepare_ms,tensors_ms,pairwise_ms\n";
+           "global_rot_deg,global_trans_res,best_frame_rot_deg,best_frame_trans_res,lum_rot_deg,lum_trans_res,prepare_ms,tensors_ms,pairwise_ms\n";
     for (std::size_t i = 0; i < views.size (); ++i)
     {
       const auto& v = result.views[i];
       const std::string reference = v.reference >= 0 ? result.views[v.reference].name : "";
-      std::printf ("  %-22s %-3s ref %-22s hyp %3zu refused %zu excess %5.2f  pairwise %.3f deg %.2f res  global %.3f deg %.2f res%s%s\n",
+      std::printf ("  %-22s %-3s ref %-22s hyp %3zu refused %zu excess %5.2f  pairwise %.3f deg %.2f res  global %.3f deg %.2f res  best frame %.3f deg %.2f res%s%s\n",
                    v.name.c_str (), v.registered ? "yes" : "NO", reference.c_str (), v.pairwise.hypotheses_tried, v.globally_refused,
                    v.global_excess, pairwise_errors[i].rotation_deg, pairwise_errors[i].translation_res, global_errors[i].rotation_deg,
-                   global_errors[i].translation_res, v.error.empty () ? "" : "  ", v.error.c_str ());
+                   global_errors[i].translation_res, best_frame_errors[i].rotation_deg, best_frame_errors[i].translation_res,
+                   v.error.empty () ? "" : "  ", v.error.c_str ());
       if (!v.registered)
       {
         std::printf ("    last tried: %zu matches, failures per stage:", v.pairwise.matches);
@@ -134,7 +136,8 @@ namespace
       }
       csv << v.name << ',' << v.registered << ',' << reference << ',' << v.pairwise.hypotheses_tried << ',' << v.globally_refused << ','
           << v.global_excess << ',' << pairwise_errors[i].rotation_deg << ',' << pairwise_errors[i].translation_res << ','
-          << global_errors[i].rotation_deg << ',' << global_errors[i].translation_res << ',' << lum_errors[i].rotation_deg << ','
+          << global_errors[i].rotation_deg << ',' << global_errors[i].translation_res << ',' << best_frame_errors[i].rotation_deg << ','
+          << best_frame_errors[i].translation_res << ',' << lum_errors[i].rotation_deg << ','
           << lum_errors[i].translation_res << ',' << v.prepare_ms << ',' << v.tensors_ms << ',' << v.pairwise_ms << '\n';
     }
     {
@@ -176,6 +179,7 @@ namespace
                  result.global.rms_after / result.resolution);
     printSummary ("pairwise", summarize (pairwise_errors));
     printSummary ("global", summarize (global_errors));
+    printSummary ("best frame", summarize (best_frame_errors));
     if (options.lum)
       printSummary ("LUM", summarize (lum_errors));
     const auto& t = result.timings;

@@ -73,3 +73,58 @@ TEST (RegistrationError, OverlapCountsTheSmallerView)
   small.clear ();
   EXPECT_THROW (pcl::viewOverlap (big, shift, small, shift, 0.001), pcl::InvalidScanException);
 }
+
+namespace
+{
+  using Poses = std::vector<Eigen::Affine3d, Eigen::aligned_allocator<Eigen::Affine3d>>;
+
+  /** A 0.1 m cloud of points off the origin, so that rotation and translation both show in it. */
+  pcl::PointCloud<pcl::PointXYZ>
+  blob ()
+  {
+    pcl::PointCloud<pcl::PointXYZ> c;
+    for (int i = 0; i < 10; ++i)
+      for (int j = 0; j < 10; ++j)
+        c.push_back (pcl::PointXYZ (0.01f * i, 0.01f * j, 0.002f * ((i * 7 + j * 3) % 5)));
+    return c;
+  }
+}
+
+TEST (RegistrationError, BestFitCommonFrameUndoesAMotionOfTheWholeSet)
+{
+  const auto cloud = blob ();
+  Poses truth, estimates;
+  const Eigen::Affine3d g = Eigen::Translation3d (0.3, -0.2, 0.1) * Eigen::AngleAxisd (0.4, Eigen::Vector3d (1, -1, 2).normalized ());
+  for (int i = 0; i < 5; ++i)
+  {
+    truth.push_back (Eigen::Translation3d (0.05 * i, 0.0, 0.01) * Eigen::AngleAxisd (0.5 * i, Eigen::Vector3d::UnitY ()));
+    estimates.push_back (g.inverse () * truth.back ());
+  }
+  const std::vector<const pcl::PointCloud<pcl::PointXYZ>*> views (5, &cloud);
+  const Eigen::Affine3d fit = pcl::bestFitCommonFrame (views, estimates, truth);
+  EXPECT_TRUE (fit.matrix ().isApprox (g.matrix (), 1e-9));
+  EXPECT_THROW (pcl::bestFitCommonFrame (views, estimates, Poses (4)), pcl::BadArgumentException);
+  EXPECT_THROW (pcl::bestFitCommonFrame (std::vector<const pcl::PointCloud<pcl::PointXYZ>*> (5, nullptr), estimates, truth),
+                pcl::BadArgumentException);
+}
+
+TEST (RegistrationError, BestFitCommonFrameChargesATiltedTurntableAxisOnce)
+{
+  // The estimated turntable turns about an axis 0.3 deg off the true one. Fixing view 0 to its truth
+  // leaves the far side 2 x 0.3 deg off; the best common frame leaves every view about 0.3 deg off (a
+  // little more, since it also balances the points' displacements).
+  const auto cloud = blob ();
+  const double tilt = 0.3 * M_PI / 180.0;
+  const Eigen::Vector3d axis = Eigen::Vector3d::UnitY (), tilted = Eigen::AngleAxisd (tilt, Eigen::Vector3d::UnitX ()) * axis;
+  Poses truth, estimates;
+  for (int i = 0; i < 12; ++i)
+  {
+    truth.emplace_back (Eigen::AngleAxisd (M_PI / 6.0 * i, axis));
+    estimates.emplace_back (Eigen::AngleAxisd (M_PI / 6.0 * i, tilted));
+  }
+  const std::vector<const pcl::PointCloud<pcl::PointXYZ>*> views (12, &cloud);
+  EXPECT_NEAR (pcl::rotationErrorDeg (estimates[6].linear (), truth[6].linear ()), 0.6, 1e-6);
+  const Eigen::Affine3d fit = pcl::bestFitCommonFrame (views, estimates, truth);
+  for (int i = 0; i < 12; ++i)
+    EXPECT_NEAR (pcl::rotationErrorDeg ((fit * estimates[i]).linear (), truth[i].linear ()), 0.33, 0.05) << "view " << i;
+}

@@ -34,6 +34,34 @@ namespace pcl_tensor_eval
     return errors;
   }
 
+  std::vector<ViewPoseError>
+  poseErrorsInBestFrame (const EvalViews& views, const pcl::registration::ViewPoses& estimates,
+                         const std::vector<bool>& registered, double resolution)
+  {
+    std::vector<const pcl::PointCloud<pcl::PointXYZ>*> clouds;
+    pcl::registration::ViewPoses truth;
+    for (std::size_t i = 0; i < views.size (); ++i)
+    {
+      clouds.push_back (registered[i] ? views[i].cloud.get () : nullptr);
+      truth.push_back (views[i].pose);
+    }
+    std::vector<ViewPoseError> errors (views.size ());
+    const bool any = std::count (registered.begin (), registered.end (), true) > 0;
+    const Eigen::Affine3d frame = any ? pcl::bestFitCommonFrame (clouds, estimates, truth) : Eigen::Affine3d::Identity ();
+    for (std::size_t i = 0; i < views.size (); ++i)
+    {
+      if (!registered[i])
+      {
+        errors[i].rotation_deg = errors[i].translation_res = std::numeric_limits<double>::quiet_NaN ();
+        continue;
+      }
+      const pcl::RegistrationError e = pcl::registrationError (frame * estimates[i], views[i].pose, resolution);
+      errors[i].rotation_deg = e.rotation_deg;
+      errors[i].translation_res = e.translation_resolutions;
+    }
+    return errors;
+  }
+
   namespace
   {
     double

@@ -35,6 +35,12 @@ namespace pcl_tensor_eval
   poseErrors (const EvalViews& views, const pcl::registration::ViewPoses& estimates, const std::vector<bool>& registered,
               int reference, double resolution);
 
+  /** \brief The same errors after the common frame that fits the estimates best to the ground truth
+    * (pcl::bestFitCommonFrame over each registered view's points) instead of the reference view's pose. */
+  std::vector<ViewPoseError>
+  poseErrorsInBestFrame (const EvalViews& views, const pcl::registration::ViewPoses& estimates,
+                         const std::vector<bool>& registered, double resolution);
+
   PoseErrorSummary
   summarize (const std::vector<ViewPoseError>& errors);
 

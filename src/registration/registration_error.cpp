@@ -5,6 +5,7 @@
 #include <pcl/common/point_tests.h>
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/kdtree/kdtree_flann.h>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
@@ -81,5 +82,42 @@ namespace pcl
       if (tree.nearestKSearch (p, 1, index, sq) == 1 && sq[0] <= max_sq)
         ++matched;
     return static_cast<double> (matched) / static_cast<double> (a->size ());
+  }
+
+  Eigen::Affine3d
+  bestFitCommonFrame (const std::vector<const pcl::PointCloud<pcl::PointXYZ>*>& views,
+                      const std::vector<Eigen::Affine3d, Eigen::aligned_allocator<Eigen::Affine3d>>& estimates,
+                      const std::vector<Eigen::Affine3d, Eigen::aligned_allocator<Eigen::Affine3d>>& truth,
+                      std::size_t samples_per_view)
+  {
+    if (views.size () != estimates.size () || views.size () != truth.size ())
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "bestFitCommonFrame needs one estimate and one ground truth per view, got "
+                        << views.size () << " views, " << estimates.size () << " estimates and " << truth.size () << " truths");
+    std::vector<Eigen::Vector3d> from, to;
+    for (std::size_t i = 0; i < views.size (); ++i)
+    {
+      if (!views[i])
+        continue;
+      std::vector<std::size_t> finite;
+      for (std::size_t k = 0; k < views[i]->size (); ++k)
+        if (pcl::isXYZFinite ((*views[i])[k]))
+          finite.push_back (k);
+      const std::size_t step = std::max<std::size_t> (1, finite.size () / std::max<std::size_t> (1, samples_per_view));
+      for (std::size_t k = 0; k < finite.size (); k += step)
+      {
+        const Eigen::Vector3d p = (*views[i])[finite[k]].getVector3fMap ().cast<double> ();
+        from.push_back (estimates[i] * p);
+        to.push_back (truth[i] * p);
+      }
+    }
+    if (from.size () < 3)
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "bestFitCommonFrame needs at least 3 finite points, got " << from.size ());
+    Eigen::Matrix3Xd src (3, from.size ()), dst (3, to.size ());
+    for (std::size_t k = 0; k < from.size (); ++k)
+    {
+      src.col (k) = from[k];
+      dst.col (k) = to[k];
+    }
+    return Eigen::Affine3d (Eigen::umeyama (src, dst, false));
   }
 }

@@ -6,6 +6,9 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 #include <Eigen/Geometry>
+#include <Eigen/StdVector>
+
+#include <vector>
 
 namespace pcl
 {
@@ -70,4 +73,27 @@ namespace pcl
   viewOverlap (const pcl::PointCloud<pcl::PointXYZ>& cloud_a, const Eigen::Affine3d& pose_a,
                const pcl::PointCloud<pcl::PointXYZ>& cloud_b, const Eigen::Affine3d& pose_b,
                double max_distance);
+
+  /** \brief The motion G of the common frame that brings a set of estimated view poses closest to their
+    * ground truth: the rigid G minimising sum_i sum_p || G E_i p - T_i p ||^2 over points p of each view
+    * (Umeyama's closed form, without scale).
+    *
+    * Poses estimated for several views are defined only up to such a G, since their common frame is
+    * arbitrary. Scoring them after fixing one view's pose to its ground truth charges every systematic
+    * difference to the others: a turntable axis tilted by e against the ground truth's gives rotation
+    * errors growing as 2 e sin(theta / 2), 2 e at the far side, where after G every view is about e off.
+    * Trajectory benchmarks align the same way (the absolute trajectory error of Sturm et al., 2012).
+    * \param[in] views each view's points in its own frame (NaN points are skipped); nullptr leaves a view out
+    * \param[in] estimates E_i, each view's estimated pose into the estimated common frame
+    * \param[in] truth T_i, each view's true pose
+    * \param[in] samples_per_view points taken from each view, evenly over its finite points
+    * \return G, to be applied as G * E_i
+    * \throw pcl::BadArgumentException when the three lists differ in length, or fewer than 3 points are left
+    * \ingroup registration
+    */
+  Eigen::Affine3d
+  bestFitCommonFrame (const std::vector<const pcl::PointCloud<pcl::PointXYZ>*>& views,
+                      const std::vector<Eigen::Affine3d, Eigen::aligned_allocator<Eigen::Affine3d>>& estimates,
+                      const std::vector<Eigen::Affine3d, Eigen::aligned_allocator<Eigen::Affine3d>>& truth,
+                      std::size_t samples_per_view = 2000);
 }
