@@ -5,6 +5,7 @@
 
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/features/tensor.h>
+#include <pcl/features/tensor_grid.h>
 #include <pcl/io/range_scan_io.h>
 #include <pcl/simulation/example_object.h>
 #include <pcl/surface/scan_preparation.h>
@@ -368,6 +369,74 @@ TEST (TensorEstimation, BinsSumToTheAreaInsideTheCube)
       std::cout << "[ AREA     ] N=" << n << (rg ? " region growing: " : " brute force: ") << equal << " / "
                 << tensors.size () << " tensors sum to the area inside their cube" << std::endl;
     }
+}
+
+TEST (TensorEstimation, EachBinHoldsTheAreaInsideIt)
+{
+  // Bin by bin against an independent reference: the mesh clipped to that bin's own cube. Guards any
+  // faster way of splitting the faces among the bins.
+  const pcl::ScanMesh mesh = coarseExampleObject ();
+  const std::vector<Eigen::Vector3d> v = verticesOf (*mesh.cloud);
+  for (const int n : {5, 10})
+  {
+    const Tensors tensors = compute (mesh, n, false);
+    ASSERT_GT (tensors.size (), 100u);
+    for (std::size_t k = 0; k < tensors.size (); k += tensors.size () / 4)
+    {
+      SCOPED_TRACE ("N = " + std::to_string (n) + ", tensor " + std::to_string (k));
+      const auto& t = tensors[k];
+      const double bs = t.bin_size;
+      const Eigen::Vector3d origin = t.getVector3fMap ().cast<double> ();
+      // Orthonormal in double: the reference places each bin's cube through frame^T.
+      Eigen::Matrix3d frame = frameOf (t);
+      const Eigen::Vector3d x = frame.row (0).normalized ();
+      const Eigen::Vector3d z = (frame.row (2).transpose () - frame.row (2).dot (x) * x).normalized ();
+      frame.row (0) = x;
+      frame.row (1) = z.cross (x);
+      frame.row (2) = z;
+      // Local bounding boxes, to hand each bin's reference only the faces that can meet it.
+      std::vector<Eigen::Vector3d> lo, hi;
+      for (const auto& poly : mesh.polygons)
+      {
+        Eigen::Vector3d l = Eigen::Vector3d::Constant (1e300), h = -l;
+        for (const auto i : poly.vertices)
+        {
+          const Eigen::Vector3d p = frame * (v[i] - origin);
+          l = l.cwiseMin (p);
+          h = h.cwiseMax (p);
+        }
+        lo.push_back (l);
+        hi.push_back (h);
+      }
+      // The grid itself, with the very origin and frame of the reference (the tensor stores them in float).
+      pcl::TensorSurfaceGrid grid;
+      grid.setMesh (v, mesh.polygons);
+      grid.setGrid (n, bs);
+      std::vector<std::uint16_t> bin_index;
+      std::vector<float> bin_area;
+      grid.computeBins (origin, frame, -1, -1, bin_index, bin_area);
+      std::map<int, float> stored;
+      for (std::size_t b = 0; b < bin_index.size (); ++b)
+        stored[bin_index[b]] = bin_area[b];
+      for (int bin = 0; bin < n * n * n; ++bin)
+      {
+        const Eigen::Vector3d centre =
+            (Eigen::Vector3d (bin / (n * n), (bin / n) % n, bin % n) - Eigen::Vector3d::Constant (0.5 * (n - 1))) * bs;
+        std::vector<pcl::Vertices> near;
+        for (std::size_t f = 0; f < mesh.polygons.size (); ++f)
+          if (((hi[f] - centre).array () >= -0.5 * bs).all () && ((lo[f] - centre).array () <= 0.5 * bs).all ())
+            near.push_back (mesh.polygons[f]);
+        const double expected = pcl_tensor_test::meshAreaInCube (v, near, origin + frame.transpose () * centre, frame,
+                                                                 0.5 * bs);
+        const auto it = stored.find (bin);
+        const double area = it == stored.end () ? 0.0 : it->second;
+        if (it == stored.end () || expected == 0.0)
+          EXPECT_LT (std::max (area, expected), 1e-6 * bs * bs) << "bin " << bin;
+        else
+          EXPECT_NEAR (area, expected, 1e-6 * expected + 1e-9 * bs * bs) << "bin " << bin;
+      }
+    }
+  }
 }
 
 TEST (TensorEstimation, PairsObeyTheConstraints)
