@@ -148,22 +148,6 @@ namespace
     return slash == std::string::npos ? path : path.substr (slash + 1);
   }
 
-  /** The registered views as the integration takes them: M_i in its own frame, and its pose. */
-  std::vector<pcl::IntegrationView>
-  registeredViews (const pcl::registration::MultiviewRegistrationResult& result)
-  {
-    std::vector<pcl::IntegrationView> views;
-    for (const auto& v : result.views)
-      if (v.registered && v.prepared)
-      {
-        pcl::IntegrationView r;
-        r.mesh = pcl::ScanMesh::ConstPtr (v.prepared, &v.prepared->fine);
-        r.pose = v.pose;
-        views.push_back (r);
-      }
-    return views;
-  }
-
   void
   saveConf (const std::string& path, const pcl::registration::MultiviewRegistrationResult& result)
   {
@@ -265,7 +249,7 @@ namespace
     progress.update ("integration", 0, 1);
     pcl::ScanVolumetricIntegration integration;
     integration.setParams (o.integration);
-    integration.setInputViews (registeredViews (result));
+    integration.setInputViews (pcl::registration::registeredIntegrationViews (result));
     pcl::ScanMesh model;
     integration.reconstruct (model);
     progress.update ("integration", 1, 1);

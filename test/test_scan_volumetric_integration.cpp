@@ -81,13 +81,6 @@ namespace
     return uses;
   }
 
-  double
-  median (std::vector<double> values)
-  {
-    std::nth_element (values.begin (), values.begin () + values.size () / 2, values.end ());
-    return values[values.size () / 2];
-  }
-
   const Sphere kSphere{Eigen::Vector3d (0.01, 0.02, -0.03), 0.05};
 
   pcl::RangeCameraParams
@@ -119,7 +112,7 @@ TEST (ScanVolumetricIntegration, SphereIsRecoveredWithinAFractionOfAVoxel)
     errors.push_back (std::abs (x.norm () - kSphere.radius) / report.voxel_size);
     EXPECT_GT (p.getNormalVector3fMap ().cast<double> ().dot (x.normalized ()), 0.9);
   }
-  EXPECT_LT (median (errors), 0.05);
+  EXPECT_LT (pcl_tensor_test::median (errors), 0.05);
   EXPECT_LT (*std::max_element (errors.begin (), errors.end ()), 0.25);
   // Welded and closed: every edge is shared by exactly two triangles.
   for (const auto& e : edgeUses (model))
@@ -141,7 +134,7 @@ TEST (ScanVolumetricIntegration, OrthographicViewsRecoverTheSphere)
   for (const auto& p : *model.cloud)
     errors.push_back (std::abs ((p.getVector3fMap ().cast<double> () - kSphere.centre).norm () - kSphere.radius)
                       / integration.getReport ().voxel_size);
-  EXPECT_LT (median (errors), 0.05);
+  EXPECT_LT (pcl_tensor_test::median (errors), 0.05);
   EXPECT_LT (*std::max_element (errors.begin (), errors.end ()), 0.25);
 }
 
@@ -228,7 +221,7 @@ TEST (ScanVolumetricIntegration, ExampleObjectFromItsSyntheticViews)
     model_error.push_back (to_object.distance (p.getVector3fMap ().cast<double> ()) / resolution);
   for (const auto& p : *object.cloud)
     coverage_error.push_back (to_model.distance (p.getVector3fMap ().cast<double> ()) / resolution);
-  EXPECT_LT (median (model_error), 0.5);
+  EXPECT_LT (pcl_tensor_test::median (model_error), 0.5);
   // ... and covers the whole object: no part of it is missing from the model.
   EXPECT_LT (*std::max_element (coverage_error.begin (), coverage_error.end ()), 2.0);
 }

@@ -182,4 +182,11 @@ namespace pcl_tensor_test
     }
     EXPECT_EQ (differing, 0u);
   }
+
+  double
+  median (std::vector<double> values)
+  {
+    std::nth_element (values.begin (), values.begin () + values.size () / 2, values.end ());
+    return values[values.size () / 2];
+  }
 }

@@ -27,6 +27,9 @@ namespace pcl_tensor_test
     * multiples of 2^-20 and smaller than 1 in magnitude, the result is again exact in float. */
   Eigen::Isometry3d randomExactRigidTransform (std::mt19937& rng, double max_translation = 1.0);
 
+  /** \brief The median of \a values (the upper one of an even count); \a values must not be empty. */
+  double median (std::vector<double> values);
+
   /** \brief Round \a value to a multiple of \a step (a power of two keeps it exact in float). */
   inline float quantize (float value, double step)
   {

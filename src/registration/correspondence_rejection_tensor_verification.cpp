@@ -265,7 +265,7 @@ namespace pcl
 
       // Beyond the paper: neither view may put surface where the other's sensor saw through.
       result.free_space_violation = freeSpaceViolation (result.transform, std::max (params_.free_space_distance * d_res,
-                                                                                    3.0 * result.icp_fitness));
+                                                                                    3.0 * std::hypot (model_->noise, scene_->noise)));
       if (result.free_space_violation > params_.free_space_fraction)
       {
         result.stage = TensorVerificationStage::FREE_SPACE;

@@ -32,6 +32,21 @@ namespace pcl
       return static_cast<std::size_t> (std::count_if (views.begin (), views.end (), [] (const auto& v) { return v.registered; }));
     }
 
+    std::vector<pcl::IntegrationView>
+    registeredIntegrationViews (const MultiviewRegistrationResult& result)
+    {
+      std::vector<pcl::IntegrationView> views;
+      for (const auto& v : result.views)
+        if (v.registered && v.prepared)
+        {
+          pcl::IntegrationView r;
+          r.mesh = pcl::ScanMesh::ConstPtr (v.prepared, &v.prepared->fine);
+          r.pose = v.pose;
+          views.push_back (r);
+        }
+      return views;
+    }
+
     namespace
     {
       using TensorsPtr = pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr;

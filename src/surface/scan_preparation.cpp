@@ -2,6 +2,7 @@
  * pcl_tensor: automatic pairwise registration of range images with tensors.
  */
 #include <pcl/surface/scan_preparation.h>
+#include <pcl/common/scan_noise.h>
 #include <pcl/surface/quadric_mesh_reduction.h>
 #include <pcl/surface/range_scan_triangulation.h>
 
@@ -34,6 +35,7 @@ namespace pcl
     PreparedScan scan;
     stages.triangulation.triangulate (cloud, scan.fine);
     scan.resolution = meshResolution (scan.fine);
+    scan.noise = estimateScanNoise (*scan.fine.cloud, 3.0 * scan.resolution);
     stages.reduction.reduce (scan.fine, scan.reduced);
     stages.normals.compute (scan.reduced, scan.fine, scan.resolution);
     return scan;

@@ -6,6 +6,7 @@
 #include <pcl/registration/global_verification.h>
 #include <pcl/registration/multiview_point_to_plane_icp.h>
 #include <pcl/registration/tensor_registration.h>
+#include <pcl/surface/scan_volumetric_integration.h>
 
 #include <functional>
 #include <memory>
@@ -111,6 +112,13 @@ namespace pcl
 
       std::size_t registeredCount () const;
     };
+
+    /** \brief The registered views as volumetric integration takes them: each view's fine mesh M_i in
+      * its own frame (sharing ownership of the view's prepared scan) and its pose after the global step.
+      * \ingroup registration
+      */
+    std::vector<pcl::IntegrationView>
+    registeredIntegrationViews (const MultiviewRegistrationResult& result);
 
     /** \brief Automatic registration of ordered views (Mian et al., Sections 4.2 and 5; Fig. 9,
       * modules 1-5): every view is meshed and reduced and its tensors computed once, with D from all

@@ -29,6 +29,8 @@ namespace pcl
     ScanMesh fine;            ///< M_i, with face-average normals (NaN on vertices of no face)
     ScanMesh reduced;         ///< M'_i, with normals
     double resolution = 0.0;  ///< d_res of M_i: the mean edge length
+    /** Noise of M_i's points (estimateScanNoise over neighbourhoods of 3 d_res), in its units. */
+    double noise = 0.0;
   };
 
   /** \brief Run triangulation, reduction and normal estimation on one range image.
