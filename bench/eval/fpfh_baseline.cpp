@@ -94,10 +94,11 @@ namespace pcl_tensor_eval
       return result;
 
     watch.reset ();
-    // The tensor verification's own point-to-plane ICP, with its iterations and distance.
+    // The tensor verification's own point-to-plane ICP, with its iterations and distances.
     pcl::registration::PointToPlaneIcpParams icp;
     icp.max_iterations = icp_params.icp_iterations;
     icp.max_distance = icp_params.icp_max_distance * resolution;
+    icp.final_distance = icp_params.icp_final_distance * resolution;
     pcl::BoundedNearestSearch search (static_cast<float> (icp.max_distance));
     search.setInputCloud (*model.points);
     result.transform = pcl::registration::pointToPlaneIcp (*scene.points, *model.points, search,

@@ -53,9 +53,11 @@ namespace pcl
       // With a zero n_c or distance every hypothesis would count its correspondences against zero.
       if (!(p.correspondence_fraction > 0.0 && p.correspondence_fraction <= 1.0))
         PCL_TENSOR_THROW (BadArgumentException, "verification: n_c fraction must be in (0, 1], got " << p.correspondence_fraction);
-      if (!positive (p.coarse_distance) || !positive (p.fine_distance) || !positive (p.icp_max_distance))
-        PCL_TENSOR_THROW (BadArgumentException, "verification: distances must be positive, got coarse " << p.coarse_distance
-                          << ", fine " << p.fine_distance << ", ICP " << p.icp_max_distance);
+      if (!positive (p.coarse_distance) || !positive (p.fine_distance) || !positive (p.icp_max_distance)
+          || !positive (p.icp_final_distance) || p.icp_final_distance > p.icp_max_distance)
+        PCL_TENSOR_THROW (BadArgumentException, "verification: distances must be positive (ICP's final one at most its first), got coarse "
+                          << p.coarse_distance << ", fine " << p.fine_distance << ", ICP " << p.icp_max_distance << " to "
+                          << p.icp_final_distance);
       if (!(p.coarse_dimension_fraction >= 0.0) || !(p.fine_dimension_tolerance >= 0.0) ||
           !std::isfinite (p.coarse_dimension_fraction) || !std::isfinite (p.fine_dimension_tolerance))
         PCL_TENSOR_THROW (BadArgumentException, "verification: dimension tolerances must be finite and non-negative");
@@ -105,7 +107,7 @@ namespace pcl
         return;
       if (!model_ || !scene_ || model_->fine.cloud->empty () || scene_->fine.cloud->empty ())
         PCL_TENSOR_THROW (BadArgumentException, "verification needs the prepared model and scene views");
-      // Cells of 2 d_res: every query asks for 1 to 6 d_res (see BoundedNearestSearch).
+      // Cells of 2 d_res: every query asks for 1 to 8 d_res (see BoundedNearestSearch).
       const float cell = static_cast<float> (2.0 * getResolution ());
       model_search_ = pcl::BoundedNearestSearch (cell);
       model_search_.setInputCloud (*model_->fine.cloud);
@@ -233,6 +235,7 @@ namespace pcl
       PointToPlaneIcpParams icp;
       icp.max_iterations = params_.icp_iterations;
       icp.max_distance = params_.icp_max_distance * d_res;
+      icp.final_distance = params_.icp_final_distance * d_res;
       icp.min_translation = 1e-3 * d_res;
       const PointToPlaneIcpResult refined = pointToPlaneIcp (*scene_sample_, *model_->fine.cloud, model_search_, hypothesis, icp);
       result.transform = refined.transform;

@@ -63,32 +63,51 @@ namespace pcl
       }
     }
 
+    namespace
+    {
+      /** One stage: iterate at one pairing distance from \a result's pose, updating it in place. */
+      void
+      iterate (const pcl::PointCloud<pcl::PointNormal>& source, const pcl::PointCloud<pcl::PointNormal>& target,
+               const pcl::BoundedNearestSearch& search, const PointToPlaneIcpParams& params, double max_distance,
+               PointToPlaneIcpResult& result)
+      {
+        for (int it = 0; it < params.max_iterations; ++it)
+        {
+          const Step step = solveStep (source, target, search, result.transform, max_distance);
+          result.pairs = step.pairs;
+          result.rms = step.rms;
+          if (!step.solved)
+            break;
+          // The small rotation of the linearisation, applied as an exact rotation about its axis.
+          const Eigen::Vector3d w = step.x.head<3> ();
+          Eigen::Affine3d update = Eigen::Affine3d::Identity ();
+          if (w.norm () > 0.0)
+            update.linear () = Eigen::AngleAxisd (w.norm (), w.normalized ()).toRotationMatrix ();
+          update.translation () = step.x.tail<3> ();
+          result.transform = (update.matrix () * result.transform.cast<double> ()).cast<float> ();
+          ++result.iterations;
+          if (w.norm () < params.min_rotation && step.x.tail<3> ().norm () <= params.min_translation)
+            break;
+        }
+      }
+    }
+
     PointToPlaneIcpResult
     pointToPlaneIcp (const pcl::PointCloud<pcl::PointNormal>& source, const pcl::PointCloud<pcl::PointNormal>& target,
                      const pcl::BoundedNearestSearch& search, const Eigen::Matrix4f& initial,
                      const PointToPlaneIcpParams& params)
     {
-      if (!(params.max_distance > 0.0) || params.max_iterations < 0)
-        PCL_TENSOR_THROW (BadArgumentException, "ICP needs a positive pairing distance and a non-negative iteration count");
+      if (!(params.max_distance > 0.0) || params.max_iterations < 0 || !(params.final_distance >= 0.0))
+        PCL_TENSOR_THROW (BadArgumentException, "ICP needs a positive pairing distance, a non-negative final distance "
+                          "and a non-negative iteration count");
       PointToPlaneIcpResult result;
       result.transform = initial;
-      for (int it = 0; it < params.max_iterations; ++it)
+      double distance = params.max_distance;
+      iterate (source, target, search, params, distance, result);
+      while (params.final_distance > 0.0 && distance > params.final_distance)
       {
-        const Step step = solveStep (source, target, search, result.transform, params.max_distance);
-        result.pairs = step.pairs;
-        result.rms = step.rms;
-        if (!step.solved)
-          break;
-        // The small rotation of the linearisation, applied as an exact rotation about its axis.
-        const Eigen::Vector3d w = step.x.head<3> ();
-        Eigen::Affine3d update = Eigen::Affine3d::Identity ();
-        if (w.norm () > 0.0)
-          update.linear () = Eigen::AngleAxisd (w.norm (), w.normalized ()).toRotationMatrix ();
-        update.translation () = step.x.tail<3> ();
-        result.transform = (update.matrix () * result.transform.cast<double> ()).cast<float> ();
-        result.iterations = it + 1;
-        if (w.norm () < params.min_rotation && step.x.tail<3> ().norm () <= params.min_translation)
-          break;
+        distance = std::max (0.5 * distance, params.final_distance);
+        iterate (source, target, search, params, distance, result);
       }
       return result;
     }

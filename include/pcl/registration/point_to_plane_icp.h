@@ -18,6 +18,11 @@ namespace pcl
     {
       int max_iterations = 30;          ///< iterations at most
       double max_distance = 0.0;        ///< pairs farther apart are not used (required, > 0)
+      /** Coarse to fine: when positive and below max_distance, ICP runs again from its last pose with
+        * the distance halved, down to this one (8, 4, 2 from 8 to 2), each stage with max_iterations. A
+        * wide first stage reaches poses a single tensor match leaves 5-10 degrees off; a tight last one
+        * keeps the views' parts that do not overlap from pulling the pose. 0: one stage. */
+      double final_distance = 0.0;
       double min_rotation = 1e-5;       ///< stop when an update turns less than this (radians) ...
       double min_translation = 0.0;     ///< ... and moves less than this
     };
@@ -41,7 +46,8 @@ namespace pcl
       * \param[in] search the nearest-neighbour search built on \a target (best with cells near
       *            \a params.max_distance)
       * \param[in] initial the starting transform of the source
-      * \param[in] params stopping rules
+      * \param[in] params stopping rules and the pairing distances
+      * \return the pose after the last stage; its iterations are those of every stage
       * \ingroup registration
       */
     PointToPlaneIcpResult

@@ -1,0 +1,73 @@
+/*
+ * pcl_tensor: known-answer tests of the verification's point-to-plane ICP, one stage and coarse to fine.
+ */
+#include "test_utils.h"
+
+#include <pcl/common/tensor_exceptions.h>
+#include <pcl/registration/point_to_plane_icp.h>
+#include <pcl/registration/registration_error.h>
+
+namespace
+{
+  /** z = 5 mm sin(60 x) cos(45 y) on a 100 x 100 grid of 1 mm pitch, with its exact normals. */
+  pcl::PointCloud<pcl::PointNormal>
+  wavySurface ()
+  {
+    pcl::PointCloud<pcl::PointNormal> cloud;
+    for (int i = 0; i < 100; ++i)
+      for (int j = 0; j < 100; ++j)
+      {
+        const double x = 1e-3 * (i - 50), y = 1e-3 * (j - 50);
+        const double z = 5e-3 * std::sin (60 * x) * std::cos (45 * y);
+        const double zx = 0.3 * std::cos (60 * x) * std::cos (45 * y), zy = -0.225 * std::sin (60 * x) * std::sin (45 * y);
+        pcl::PointNormal p;
+        p.getVector3fMap () = Eigen::Vector3f (x, y, z);
+        p.getNormalVector3fMap () = Eigen::Vector3d (-zx, -zy, 1.0).normalized ().cast<float> ();
+        cloud.push_back (p);
+      }
+    return cloud;
+  }
+}
+
+TEST (PointToPlaneIcp, CoarseToFineRecoversAMotionBeyondItsFinalDistance)
+{
+  const auto target = wavySurface ();
+  // The source: every 7th point, moved by the inverse of a known motion of 2 degrees and 4 mm.
+  const Eigen::Affine3d truth = Eigen::Translation3d (3e-3, -2e-3, 1.5e-3) * Eigen::AngleAxisd (2.0 * M_PI / 180.0, Eigen::Vector3d (1, 2, 0.5).normalized ());
+  pcl::PointCloud<pcl::PointNormal> source;
+  for (std::size_t k = 0; k < target.size (); k += 7)
+  {
+    pcl::PointNormal p = target[k];
+    p.getVector3fMap () = (truth.inverse () * p.getVector3fMap ().cast<double> ()).cast<float> ();
+    source.push_back (p);
+  }
+  pcl::BoundedNearestSearch search (2e-3f);
+  search.setInputCloud (target);
+  pcl::registration::PointToPlaneIcpParams params;
+  params.max_iterations = 30;
+  params.max_distance = 8e-3;
+  params.final_distance = 1e-3;
+  const auto staged = pcl::registration::pointToPlaneIcp (source, target, search, Eigen::Matrix4f::Identity (), params);
+  const auto e = pcl::registrationError (Eigen::Affine3d (staged.transform.cast<double> ()), truth, 1e-3);
+  EXPECT_LT (e.rotation_deg, 0.01);
+  EXPECT_LT (e.translation_resolutions, 0.01);
+  EXPECT_LT (staged.rms, 1e-5);
+  EXPECT_GT (staged.iterations, 0);
+  // Four stages (8, 4, 2, 1 mm), so more iterations than the first stage alone.
+  params.final_distance = 0.0;
+  const auto single = pcl::registration::pointToPlaneIcp (source, target, search, Eigen::Matrix4f::Identity (), params);
+  EXPECT_GE (staged.iterations, single.iterations + 3);
+}
+
+TEST (PointToPlaneIcp, BadParametersAreRefused)
+{
+  const auto target = wavySurface ();
+  pcl::BoundedNearestSearch search (2e-3f);
+  search.setInputCloud (target);
+  pcl::registration::PointToPlaneIcpParams params;
+  params.max_distance = 0.0;
+  EXPECT_THROW (pcl::registration::pointToPlaneIcp (target, target, search, Eigen::Matrix4f::Identity (), params), pcl::BadArgumentException);
+  params.max_distance = 1e-3;
+  params.final_distance = -1.0;
+  EXPECT_THROW (pcl::registration::pointToPlaneIcp (target, target, search, Eigen::Matrix4f::Identity (), params), pcl::BadArgumentException);
+}
