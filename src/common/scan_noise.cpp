@@ -62,7 +62,8 @@ namespace pcl
   double
   estimateScanNoise (const pcl::PointCloud<pcl::PointNormal>& points, double radius, std::size_t samples)
   {
-    if (!(radius > 0.0) || !std::isfinite (radius) || samples == 0)
+    // The wider search (2 radius) must stay a finite float too.
+    if (!(radius > 0.0) || !std::isfinite (static_cast<float> (2.0 * radius)) || samples == 0)
       PCL_TENSOR_THROW (BadArgumentException, "scan noise needs a positive radius and sample count, got " << radius << " and "
                         << samples);
     std::vector<std::size_t> finite;

@@ -35,9 +35,9 @@ namespace pcl
     PreparedScan scan;
     stages.triangulation.triangulate (cloud, scan.fine);
     scan.resolution = meshResolution (scan.fine);
-    scan.noise = estimateScanNoise (*scan.fine.cloud, 3.0 * scan.resolution);
     stages.reduction.reduce (scan.fine, scan.reduced);
     stages.normals.compute (scan.reduced, scan.fine, scan.resolution);
+    scan.noise = estimateScanNoise (*scan.fine.cloud, 3.0 * scan.resolution);
     return scan;
   }
 

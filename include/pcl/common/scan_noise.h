@@ -22,7 +22,8 @@ namespace pcl
     * \param[in] radius neighbourhood radius (> 0), e.g. 3 d_res
     * \param[in] samples neighbourhoods to fit (> 0)
     * \return sigma, in the points' units; 0 when no neighbourhood has 4 points
-    * \throw pcl::BadArgumentException when \a radius or \a samples is not positive
+    * \throw pcl::BadArgumentException when \a radius or \a samples is not positive, or twice \a radius is
+    *        not a finite float
     * \ingroup common
     */
   double
