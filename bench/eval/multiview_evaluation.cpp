@@ -14,24 +14,36 @@
 
 namespace pcl_tensor_eval
 {
+  namespace
+  {
+    /** Errors of G * estimate(i) against GT(i) for the registered views; NaN for the others. */
+    std::vector<ViewPoseError>
+    errorsInFrame (const EvalViews& views, const pcl::registration::ViewPoses& estimates, const std::vector<bool>& registered,
+                   const Eigen::Affine3d& frame, double resolution)
+    {
+      std::vector<ViewPoseError> errors (views.size ());
+      for (std::size_t i = 0; i < views.size (); ++i)
+      {
+        if (!registered[i])
+        {
+          errors[i].rotation_deg = errors[i].translation_res = std::numeric_limits<double>::quiet_NaN ();
+          continue;
+        }
+        const pcl::RegistrationError e = pcl::registrationError (frame * estimates[i], views[i].pose, resolution);
+        errors[i].rotation_deg = e.rotation_deg;
+        errors[i].translation_res = e.translation_resolutions;
+      }
+      return errors;
+    }
+  }
+
   std::vector<ViewPoseError>
   poseErrors (const EvalViews& views, const pcl::registration::ViewPoses& estimates, const std::vector<bool>& registered,
               int reference, double resolution)
   {
-    std::vector<ViewPoseError> errors (views.size ());
-    for (std::size_t i = 0; i < views.size (); ++i)
-    {
-      if (!registered[i] || reference < 0)
-      {
-        errors[i].rotation_deg = errors[i].translation_res = std::numeric_limits<double>::quiet_NaN ();
-        continue;
-      }
-      const Eigen::Affine3d estimate = views[reference].pose * estimates[i];
-      const pcl::RegistrationError e = pcl::registrationError (estimate, views[i].pose, resolution);
-      errors[i].rotation_deg = e.rotation_deg;
-      errors[i].translation_res = e.translation_resolutions;
-    }
-    return errors;
+    if (reference < 0)
+      return errorsInFrame (views, estimates, std::vector<bool> (views.size (), false), Eigen::Affine3d::Identity (), resolution);
+    return errorsInFrame (views, estimates, registered, views[reference].pose, resolution);
   }
 
   std::vector<ViewPoseError>
@@ -45,21 +57,9 @@ namespace pcl_tensor_eval
       clouds.push_back (registered[i] ? views[i].cloud.get () : nullptr);
       truth.push_back (views[i].pose);
     }
-    std::vector<ViewPoseError> errors (views.size ());
     const bool any = std::count (registered.begin (), registered.end (), true) > 0;
     const Eigen::Affine3d frame = any ? pcl::bestFitCommonFrame (clouds, estimates, truth) : Eigen::Affine3d::Identity ();
-    for (std::size_t i = 0; i < views.size (); ++i)
-    {
-      if (!registered[i])
-      {
-        errors[i].rotation_deg = errors[i].translation_res = std::numeric_limits<double>::quiet_NaN ();
-        continue;
-      }
-      const pcl::RegistrationError e = pcl::registrationError (frame * estimates[i], views[i].pose, resolution);
-      errors[i].rotation_deg = e.rotation_deg;
-      errors[i].translation_res = e.translation_resolutions;
-    }
-    return errors;
+    return errorsInFrame (views, estimates, registered, frame, resolution);
   }
 
   namespace
