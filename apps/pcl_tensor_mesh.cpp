@@ -29,6 +29,8 @@ namespace
     print_info ("  --edge-std K         prune triangles with an edge over mean + K stddev (default "); print_value ("%g", d.edge_std_devs); print_info (")\n");
     print_info ("  --normals fine|face  normal approach (b) or (a) of Section 2 (default "); print_value ("fine"); print_info (")\n");
     print_info ("  --normal-radius R    radius of approach (b), in d_res (default "); print_value ("%g", d.normal_radius_resolutions); print_info (")\n");
+    print_info ("  --stray-gap G        fragments over G d_res from the rest of the scan ... (default "); print_value ("%g", d.stray_fragment_gap); print_info (")\n");
+    print_info ("  --stray-fraction F   ... with under F of its points are removed; 0 keeps all (default "); print_value ("%g", d.stray_fragment_fraction); print_info (")\n");
     print_info ("  --viewpoint x,y,z    perspective sensor at x,y,z looking at the scan (default: a PCD's pose; the pushbroom a PLY grid fits; else +z)\n");
     print_info ("Exit codes: 0 done, 2 bad input or usage.\n");
   }
@@ -41,6 +43,8 @@ namespace
     parse_argument (argc, argv, "--faces", params.target_faces);
     parse_argument (argc, argv, "--edge-std", params.edge_std_devs);
     parse_argument (argc, argv, "--normal-radius", params.normal_radius_resolutions);
+    parse_argument (argc, argv, "--stray-gap", params.stray_fragment_gap);
+    parse_argument (argc, argv, "--stray-fraction", params.stray_fragment_fraction);
     std::string normals = "fine";
     parse_argument (argc, argv, "--normals", normals);
     if (normals == "face")

@@ -27,20 +27,34 @@ namespace
       }
     return cloud;
   }
+
+  /** A known motion of 2 degrees and 4 mm. */
+  Eigen::Affine3d
+  knownMotion ()
+  {
+    return Eigen::Translation3d (3e-3, -2e-3, 1.5e-3) * Eigen::AngleAxisd (2.0 * M_PI / 180.0, Eigen::Vector3d (1, 2, 0.5).normalized ());
+  }
+
+  /** Every \a step-th point of \a target, moved by the inverse of \a truth: ICP must recover \a truth. */
+  pcl::PointCloud<pcl::PointNormal>
+  movedSample (const pcl::PointCloud<pcl::PointNormal>& target, const Eigen::Affine3d& truth, std::size_t step)
+  {
+    pcl::PointCloud<pcl::PointNormal> source;
+    for (std::size_t k = 0; k < target.size (); k += step)
+    {
+      pcl::PointNormal p = target[k];
+      p.getVector3fMap () = (truth.inverse () * p.getVector3fMap ().cast<double> ()).cast<float> ();
+      source.push_back (p);
+    }
+    return source;
+  }
 }
 
 TEST (PointToPlaneIcp, CoarseToFineRecoversAMotionBeyondItsFinalDistance)
 {
   const auto target = wavySurface ();
-  // The source: every 7th point, moved by the inverse of a known motion of 2 degrees and 4 mm.
-  const Eigen::Affine3d truth = Eigen::Translation3d (3e-3, -2e-3, 1.5e-3) * Eigen::AngleAxisd (2.0 * M_PI / 180.0, Eigen::Vector3d (1, 2, 0.5).normalized ());
-  pcl::PointCloud<pcl::PointNormal> source;
-  for (std::size_t k = 0; k < target.size (); k += 7)
-  {
-    pcl::PointNormal p = target[k];
-    p.getVector3fMap () = (truth.inverse () * p.getVector3fMap ().cast<double> ()).cast<float> ();
-    source.push_back (p);
-  }
+  const Eigen::Affine3d truth = knownMotion ();
+  const auto source = movedSample (target, truth, 7);
   pcl::BoundedNearestSearch search (2e-3f);
   search.setInputCloud (target);
   pcl::registration::PointToPlaneIcpParams params;
@@ -70,4 +84,29 @@ TEST (PointToPlaneIcp, BadParametersAreRefused)
   params.max_distance = 1e-3;
   params.final_distance = -1.0;
   EXPECT_THROW (pcl::registration::pointToPlaneIcp (target, target, search, Eigen::Matrix4f::Identity (), params), pcl::BadArgumentException);
+  params.final_distance = 0.0;
+  params.coarse_stage_tolerance = 0.5;
+  EXPECT_THROW (pcl::registration::pointToPlaneIcp (target, target, search, Eigen::Matrix4f::Identity (), params), pcl::BadArgumentException);
+}
+
+TEST (PointToPlaneIcp, LooseCoarseStagesReachTheSamePoseInFewerIterations)
+{
+  const auto target = wavySurface ();
+  const Eigen::Affine3d truth = knownMotion ();
+  const auto source = movedSample (target, truth, 3);
+  pcl::BoundedNearestSearch search (2e-3f);
+  search.setInputCloud (target);
+  pcl::registration::PointToPlaneIcpParams params;
+  params.max_distance = 8e-3;
+  params.final_distance = 1e-3;
+  params.min_translation = 1e-7;
+  params.coarse_stage_tolerance = 1.0;
+  const auto strict = pcl::registration::pointToPlaneIcp (source, target, search, Eigen::Matrix4f::Identity (), params);
+  params.coarse_stage_tolerance = 1000.0;
+  const auto loose = pcl::registration::pointToPlaneIcp (source, target, search, Eigen::Matrix4f::Identity (), params);
+  // The last stage still converges fully, so the pose is the one the strict schedule reaches.
+  const auto e = pcl::registrationError (Eigen::Affine3d (loose.transform.cast<double> ()), truth, 1e-3);
+  EXPECT_LT (e.rotation_deg, 0.01);
+  EXPECT_LT (e.translation_resolutions, 0.01);
+  EXPECT_LT (loose.iterations, strict.iterations);
 }

@@ -7,6 +7,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 
+#include <cmath>
+
 namespace pcl
 {
   namespace registration
@@ -69,7 +71,7 @@ namespace pcl
       void
       iterate (const pcl::PointCloud<pcl::PointNormal>& source, const pcl::PointCloud<pcl::PointNormal>& target,
                const pcl::BoundedNearestSearch& search, const PointToPlaneIcpParams& params, double max_distance,
-               PointToPlaneIcpResult& result)
+               double tolerance, PointToPlaneIcpResult& result)
       {
         for (int it = 0; it < params.max_iterations; ++it)
         {
@@ -86,7 +88,7 @@ namespace pcl
           update.translation () = step.x.tail<3> ();
           result.transform = (update.matrix () * result.transform.cast<double> ()).cast<float> ();
           ++result.iterations;
-          if (w.norm () < params.min_rotation && step.x.tail<3> ().norm () <= params.min_translation)
+          if (w.norm () < tolerance * params.min_rotation && step.x.tail<3> ().norm () <= tolerance * params.min_translation)
             break;
         }
       }
@@ -97,17 +99,22 @@ namespace pcl
                      const pcl::BoundedNearestSearch& search, const Eigen::Matrix4f& initial,
                      const PointToPlaneIcpParams& params)
     {
-      if (!(params.max_distance > 0.0) || params.max_iterations < 0 || !(params.final_distance >= 0.0))
-        PCL_TENSOR_THROW (BadArgumentException, "ICP needs a positive pairing distance, a non-negative final distance "
-                          "and a non-negative iteration count");
+      if (!(params.max_distance > 0.0) || params.max_iterations < 0 || !(params.final_distance >= 0.0)
+          || !(params.coarse_stage_tolerance >= 1.0) || !std::isfinite (params.coarse_stage_tolerance))
+        PCL_TENSOR_THROW (BadArgumentException, "ICP needs a positive pairing distance, a non-negative final distance, "
+                          "a non-negative iteration count and a finite coarse-stage tolerance of at least 1");
       PointToPlaneIcpResult result;
       result.transform = initial;
+      const auto is_last = [&params] (double distance) {
+        return !(params.final_distance > 0.0 && distance > params.final_distance);
+      };
+      const auto tolerance = [&] (double distance) { return is_last (distance) ? 1.0 : params.coarse_stage_tolerance; };
       double distance = params.max_distance;
-      iterate (source, target, search, params, distance, result);
-      while (params.final_distance > 0.0 && distance > params.final_distance)
+      iterate (source, target, search, params, distance, tolerance (distance), result);
+      while (!is_last (distance))
       {
         distance = std::max (0.5 * distance, params.final_distance);
-        iterate (source, target, search, params, distance, result);
+        iterate (source, target, search, params, distance, tolerance (distance), result);
       }
       return result;
     }

@@ -5,6 +5,10 @@
 #include <pcl/common/scan_noise.h>
 #include <pcl/surface/quadric_mesh_reduction.h>
 #include <pcl/surface/range_scan_triangulation.h>
+#include <pcl/surface/stray_fragment_removal.h>
+#include <pcl/common/tensor_exceptions.h>
+
+#include <cmath>
 
 namespace pcl
 {
@@ -20,6 +24,10 @@ namespace pcl
         reduction.setTargetFaces (params.target_faces);
         normals.setMethod (params.normal_method);
         normals.setRadiusResolutions (params.normal_radius_resolutions);
+        if (!(params.stray_fragment_gap > 0.0) || !std::isfinite (params.stray_fragment_gap)
+            || !(params.stray_fragment_fraction >= 0.0 && params.stray_fragment_fraction < 1.0))
+          PCL_TENSOR_THROW (BadArgumentException, "stray fragments: the gap must be positive and finite and the fraction in [0, 1), got "
+                            << params.stray_fragment_gap << " and " << params.stray_fragment_fraction);
       }
       RangeScanTriangulation triangulation;
       QuadricMeshReduction reduction;
@@ -34,7 +42,9 @@ namespace pcl
     const PreparationStages stages (viewpoint, params);
     PreparedScan scan;
     stages.triangulation.triangulate (cloud, scan.fine);
+    // d_res of the whole mesh sets the gap; the fragments hold too few points to change it.
     scan.resolution = meshResolution (scan.fine);
+    removeStrayFragments (scan.fine, params.stray_fragment_gap * scan.resolution, params.stray_fragment_fraction);
     stages.reduction.reduce (scan.fine, scan.reduced);
     stages.normals.compute (scan.reduced, scan.fine, scan.resolution);
     scan.noise = estimateScanNoise (*scan.fine.cloud, 3.0 * scan.resolution);

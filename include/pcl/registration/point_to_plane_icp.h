@@ -25,6 +25,10 @@ namespace pcl
       double final_distance = 0.0;
       double min_rotation = 1e-5;       ///< stop when an update turns less than this (radians) ...
       double min_translation = 0.0;     ///< ... and moves less than this
+      /** Stages before the last only have to bring the pose within reach of the next one, so they
+        * stop at this many times min_rotation and min_translation (1: every stage converges as fully
+        * as the last). 100 halves verification's ICP time on bun000-bun045 at the same final pose. */
+      double coarse_stage_tolerance = 100.0;
     };
 
     /** \brief What pointToPlaneIcp() converged to. */

@@ -21,6 +21,12 @@ namespace pcl
     ScanMeshNormalEstimation::Method normal_method = ScanMeshNormalEstimation::Method::FINE_NEIGHBOURHOOD;
     /** Neighbourhood radius of approach (b), in units of d_res. */
     double normal_radius_resolutions = 3.0;
+    /** Beyond the paper: fragments of M_i farther than this many d_res from the rest of the scan ... */
+    double stray_fragment_gap = 20.0;
+    /** ... and holding less than this fraction of its points are removed as stray returns
+      * (removeStrayFragments(); 0 keeps every point). Eq. 1 and Eq. 9 take extents, which one stray
+      * speck can set on its own. */
+    double stray_fragment_fraction = 0.01;
   };
 
   /** \brief One view, ready for tensor computation. */
@@ -33,7 +39,7 @@ namespace pcl
     double noise = 0.0;
   };
 
-  /** \brief Run triangulation, reduction and normal estimation on one range image.
+  /** \brief Run triangulation, stray-fragment removal, reduction and normal estimation on one range image.
     * \throw InvalidScanException on unusable data, pcl::BadArgumentException on bad parameters
     */
   PreparedScan
