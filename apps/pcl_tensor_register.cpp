@@ -38,6 +38,8 @@ namespace
     print_info ("  --tc T             correlation threshold t_c, Eq. 6 (default %g)\n", d.correlation_threshold);
     print_info ("  --order best|scene order of hypotheses (default best)\n");
     print_info ("  --max-hypotheses N give up after N hypotheses, 0 = all (default %d)\n", d.max_hypotheses);
+    print_info ("  --scene-batches N  compute SCENE's tensors in N batches, each verified before the next (default %d)\n",
+                d.scene_tensor_batches);
     print_info ("  --nc F             n_c as a fraction of the smaller view (default %g)\n", d.verification.correspondence_fraction);
     print_info ("  --count both|scene views whose correspondences verification counts (default %s)\n",
                 d.verification.count_both_views ? "both" : "scene");
@@ -55,6 +57,7 @@ namespace
     parse_argument (argc, argv, "--tr", p.overlap_threshold);
     parse_argument (argc, argv, "--tc", p.correlation_threshold);
     parse_argument (argc, argv, "--max-hypotheses", p.max_hypotheses);
+    parse_argument (argc, argv, "--scene-batches", p.scene_tensor_batches);
     parse_argument (argc, argv, "--nc", p.verification.correspondence_fraction);
     std::string order = "best";
     parse_argument (argc, argv, "--order", order);

@@ -48,6 +48,25 @@ namespace
     }
     return source;
   }
+
+  /** ICP from 8 mm down to 1 mm, in four stages. */
+  pcl::registration::PointToPlaneIcpParams
+  stagedParams ()
+  {
+    pcl::registration::PointToPlaneIcpParams params;
+    params.max_iterations = 30;
+    params.max_distance = 8e-3;
+    params.final_distance = 1e-3;
+    return params;
+  }
+
+  void
+  expectTruthRecovered (const Eigen::Matrix4f& estimate, const Eigen::Affine3d& truth)
+  {
+    const auto e = pcl::registrationError (Eigen::Affine3d (estimate.cast<double> ()), truth, 1e-3);
+    EXPECT_LT (e.rotation_deg, 0.01);
+    EXPECT_LT (e.translation_resolutions, 0.01);
+  }
 }
 
 TEST (PointToPlaneIcp, CoarseToFineRecoversAMotionBeyondItsFinalDistance)
@@ -57,14 +76,9 @@ TEST (PointToPlaneIcp, CoarseToFineRecoversAMotionBeyondItsFinalDistance)
   const auto source = movedSample (target, truth, 7);
   pcl::BoundedNearestSearch search (2e-3f);
   search.setInputCloud (target);
-  pcl::registration::PointToPlaneIcpParams params;
-  params.max_iterations = 30;
-  params.max_distance = 8e-3;
-  params.final_distance = 1e-3;
+  auto params = stagedParams ();
   const auto staged = pcl::registration::pointToPlaneIcp (source, target, search, Eigen::Matrix4f::Identity (), params);
-  const auto e = pcl::registrationError (Eigen::Affine3d (staged.transform.cast<double> ()), truth, 1e-3);
-  EXPECT_LT (e.rotation_deg, 0.01);
-  EXPECT_LT (e.translation_resolutions, 0.01);
+  expectTruthRecovered (staged.transform, truth);
   EXPECT_LT (staged.rms, 1e-5);
   EXPECT_GT (staged.iterations, 0);
   // Four stages (8, 4, 2, 1 mm), so more iterations than the first stage alone.
@@ -96,17 +110,13 @@ TEST (PointToPlaneIcp, LooseCoarseStagesReachTheSamePoseInFewerIterations)
   const auto source = movedSample (target, truth, 3);
   pcl::BoundedNearestSearch search (2e-3f);
   search.setInputCloud (target);
-  pcl::registration::PointToPlaneIcpParams params;
-  params.max_distance = 8e-3;
-  params.final_distance = 1e-3;
+  auto params = stagedParams ();
   params.min_translation = 1e-7;
   params.coarse_stage_tolerance = 1.0;
   const auto strict = pcl::registration::pointToPlaneIcp (source, target, search, Eigen::Matrix4f::Identity (), params);
   params.coarse_stage_tolerance = 1000.0;
   const auto loose = pcl::registration::pointToPlaneIcp (source, target, search, Eigen::Matrix4f::Identity (), params);
   // The last stage still converges fully, so the pose is the one the strict schedule reaches.
-  const auto e = pcl::registrationError (Eigen::Affine3d (loose.transform.cast<double> ()), truth, 1e-3);
-  EXPECT_LT (e.rotation_deg, 0.01);
-  EXPECT_LT (e.translation_resolutions, 0.01);
+  expectTruthRecovered (loose.transform, truth);
   EXPECT_LT (loose.iterations, strict.iterations);
 }

@@ -725,3 +725,36 @@ TEST (TensorEstimation, RegionGrowingAgreesWithBruteForceOnBunnyScans)
             << std::endl;
   EXPECT_GE (agree, 0.99);
 }
+
+TEST (TensorEstimation, PairBatchesPartitionTheTensors)
+{
+  // Three batches hold every tensor of the whole view exactly once, each the same tensor.
+  const pcl::ScanMesh mesh = coarseExampleObject ();
+  const Tensors all = compute (mesh, 10, false);
+  ASSERT_GT (all.size (), 30u);
+  std::size_t total = 0;
+  for (int batch = 0; batch < 3; ++batch)
+  {
+    Estimation est;
+    est.setInputCloud (mesh.cloud);
+    est.setInputNormals (mesh.cloud);
+    est.setPolygons (mesh.polygons);
+    est.setObjectDimensions (exampleDimensions ());
+    est.setPairBatch (3, batch);
+    Tensors part;
+    est.computeOrThrow (part);
+    total += part.size ();
+    for (std::size_t k = 0; k < part.size (); ++k)
+    {
+      const auto& whole = all[static_cast<std::size_t> (batch) + 3 * k];
+      EXPECT_EQ (part[k].vertex_a, whole.vertex_a);
+      EXPECT_EQ (part[k].vertex_b, whole.vertex_b);
+      EXPECT_EQ (part[k].bin_index, whole.bin_index);
+    }
+  }
+  EXPECT_EQ (total, all.size ());
+  Estimation est;
+  EXPECT_THROW (est.setPairBatch (0, 0), pcl::BadArgumentException);
+  EXPECT_THROW (est.setPairBatch (3, 3), pcl::BadArgumentException);
+  EXPECT_THROW (est.setPairBatch (3, -1), pcl::BadArgumentException);
+}

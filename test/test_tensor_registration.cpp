@@ -67,6 +67,54 @@ TEST (TensorRegistration, AdjacentSyntheticViewsAreRegisteredAccurately)
   }
 }
 
+TEST (TensorRegistration, SceneTensorsInBatchesReachTheSamePoseWithFewerTensors)
+{
+  // One batch computes every scene tensor; eight stop after the first batch that verifies. With one
+  // hypothesis per batch most matches are deferred to the final pass, which must still find a pose.
+  const auto& views = exampleViews ();
+  std::vector<pcl::registration::TensorRegistrationReport> reports;
+  for (const auto& [batches, budget] : std::vector<std::pair<int, int>>{{1, 10}, {8, 10}, {8, 1}})
+  {
+    pcl::registration::TensorRegistrationParams params;
+    params.scene_tensor_batches = batches;
+    params.batch_hypotheses = budget;
+    TensorRegistration registration;
+    registration.setParams (params);
+    reports.push_back (registerViews (registration, views[4], views[5]));
+    const auto& report = reports.back ();
+    SCOPED_TRACE (std::to_string (batches) + " batches, " + std::to_string (budget) + " per batch");
+    ASSERT_TRUE (report.registered);
+    const auto error = pcl::registrationError (Eigen::Affine3d (report.transform.cast<double> ()),
+                                               groundTruth (views[4], views[5]), views[4].resolution);
+    EXPECT_LT (error.rotation_deg, 0.5);
+    EXPECT_LT (error.translation_resolutions, 1.0);
+    ASSERT_LT (static_cast<std::size_t> (report.winning_match.scene), report.scene_tensors);
+  }
+  EXPECT_LT (reports[1].scene_tensors, reports[0].scene_tensors);
+
+  // Views that share no surface, one match verified per batch: the deferred pass goes on to the
+  // hypothesis cap (beyond the 8 hypotheses the batches take), and none passes.
+  pcl::registration::TensorRegistrationParams params;
+  params.max_hypotheses = 30;
+  params.batch_hypotheses = 1;
+  TensorRegistration registration;
+  registration.setParams (params);
+  const auto report = registerViews (registration, views[0], views[6]);
+  EXPECT_FALSE (report.registered);
+  EXPECT_EQ (report.hypotheses_tried, 30u);
+  params.scene_tensor_batches = 1;
+  params.max_hypotheses = 1;
+  TensorRegistration whole;
+  whole.setParams (params);
+  EXPECT_EQ (report.scene_tensors, registerViews (whole, views[0], views[6]).scene_tensors);  // every batch was computed
+  pcl::registration::TensorRegistrationParams bad;
+  bad.scene_tensor_batches = 0;
+  EXPECT_THROW (pcl::registration::checkParams (bad), pcl::BadArgumentException);
+  bad.scene_tensor_batches = 2;
+  bad.batch_hypotheses = -1;
+  EXPECT_THROW (pcl::registration::checkParams (bad), pcl::BadArgumentException);
+}
+
 // Noise of 1 d_res along the lines of sight (Section 7.5) puts points up to 4 d_res in front of the
 // true surface; the free-space check allows 2 d_res or three times the two scans' combined noise
 // (PreparedScan::noise, measured on the scans), and a pose close to the true one still passes.

@@ -71,7 +71,11 @@ namespace pcl_tensor_eval
   {
     pcl::registration::TensorRegistrationReport report;
     pcl::StopWatch watch;
-    pcl::registration::registerTensorViews (model.prepared, model.tensors, scene.prepared, scene.tensors, dims, params, report);
+    // As TensorRegistration does: the scene's tensors batch by batch (its precomputed ones with one batch).
+    if (params.scene_tensor_batches > 1)
+      pcl::registration::registerTensorViewsInBatches (model.prepared, model.tensors, scene.prepared, dims, params, report);
+    else
+      pcl::registration::registerTensorViews (model.prepared, model.tensors, scene.prepared, scene.tensors, dims, params, report);
     PairResult result;
     result.time_ms = watch.getTime ();
     scoreTransform (model, scene, report.registered, report.transform, result);

@@ -114,16 +114,22 @@ namespace pcl
     }
 
     void
+    sortTensorMatches (std::vector<TensorMatch>& matches, TensorMatchOrder order)
+    {
+      auto better = [] (const TensorMatch& a, const TensorMatch& b) { return a.correlation > b.correlation; };
+      if (order == TensorMatchOrder::BEST_FIRST)
+        std::stable_sort (matches.begin (), matches.end (), better);
+      else
+        std::stable_sort (matches.begin (), matches.end (), [&] (const TensorMatch& a, const TensorMatch& b) {
+          return a.scene != b.scene ? a.scene < b.scene : better (a, b);
+        });
+    }
+
+    void
     CorrespondenceEstimationTensor::determineCorrespondences (pcl::Correspondences& correspondences, double max_distance)
     {
       matches_ = matchAll ();
-      auto better = [] (const TensorMatch& a, const TensorMatch& b) { return a.correlation > b.correlation; };
-      if (order_ == TensorMatchOrder::BEST_FIRST)
-        std::stable_sort (matches_.begin (), matches_.end (), better);
-      else
-        std::stable_sort (matches_.begin (), matches_.end (), [&] (const TensorMatch& a, const TensorMatch& b) {
-          return a.scene != b.scene ? a.scene < b.scene : better (a, b);
-        });
+      sortTensorMatches (matches_, order_);
       toCorrespondences (max_distance, correspondences);
     }
 

@@ -39,6 +39,9 @@ namespace pcl
       configureMatcher (matcher, params);
       CorrespondenceRejectorTensorVerification verifier;
       verifier.setParams (params.verification);
+      if (params.scene_tensor_batches < 1 || params.batch_hypotheses < 0)
+        PCL_TENSOR_THROW (BadArgumentException, "the scene's tensors need at least one batch and a non-negative number of "
+                          "hypotheses per batch, got " << params.scene_tensor_batches << " and " << params.batch_hypotheses);
       if (params.max_hypotheses < 0)
         PCL_TENSOR_THROW (BadArgumentException, "the hypothesis cap must be 0 (none) or positive, got " << params.max_hypotheses);
       if (!(params.repeat_rotation >= 0.0 && params.repeat_translation >= 0.0) ||
@@ -47,9 +50,11 @@ namespace pcl
     }
 
     pcl::PointCloud<pcl::TensorDescriptor>::Ptr
-    computeViewTensors (const PreparedScan& scan, const ObjectDimensions& dims, const TensorRegistrationParams& params)
+    computeViewTensors (const PreparedScan& scan, const ObjectDimensions& dims, const TensorRegistrationParams& params,
+                        int batches, int batch)
     {
       ViewTensorEstimation estimation;
+      estimation.setPairBatch (batches, batch);
       estimation.setInputCloud (scan.reduced.cloud);
       estimation.setInputNormals (scan.reduced.cloud);
       estimation.setPolygons (scan.reduced.polygons);
@@ -119,74 +124,182 @@ namespace pcl
       return transformFromTensorPair (model_tensors[match.model], match.scene_flipped ? flipPairOrder (scene) : scene);
     }
 
+    namespace
+    {
+      /** The report of a registration about to start: nothing tried, nothing found. */
+      void
+      resetReport (TensorRegistrationReport& report, std::size_t model_tensors, const ObjectDimensions& dims)
+      {
+        report.model_tensors = model_tensors;
+        report.scene_tensors = 0;
+        report.matches = 0;
+        report.comparisons = 0;
+        report.registered = false;
+        report.transform = Eigen::Matrix4f::Identity ();
+        report.failures.fill (0);
+        report.hypotheses_tried = 0;
+        report.hypotheses_skipped = 0;
+        report.hypotheses_refused = 0;
+        report.dimensions = dims;
+        report.timings.matching_ms = 0.0;
+        report.timings.verification_ms = 0.0;
+      }
+
+      /** Matching and verification of one view pair, batch after batch of scene tensors: the refuted
+        * hypotheses, the hypothesis count and the verifier's search structures carry over. */
+      class HypothesisSearch
+      {
+        public:
+          HypothesisSearch (const shared_ptr<const PreparedScan>& model, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& model_tensors,
+                            const shared_ptr<const PreparedScan>& scene, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& scene_tensors,
+                            const ObjectDimensions& dims, const TensorRegistrationParams& params, TensorRegistrationReport& report,
+                            const HypothesisAcceptor& accept)
+            : model_tensors_ (model_tensors), params_ (params), report_ (report), accept_ (accept)
+          {
+            configureVerifier (verification_, model, model_tensors, scene, scene_tensors, dims, params);
+            report.resolution = verification_.getResolution ();
+            refuted_ = RefutedHypotheses (params.repeat_rotation, params.repeat_translation * report.resolution);
+          }
+
+          /** Match \a batch (scene tensors from index \a first on) and verify its first \a budget
+            * matches in order (0: all); the others wait for finish().
+            * \return true once registered or out of hypotheses: no later batch is needed */
+          bool
+          search (const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& batch, std::size_t first, std::size_t budget = 0)
+          {
+            pcl::StopWatch watch;
+            CorrespondenceEstimationTensor estimation;
+            configureMatcher (estimation, params_);
+            estimation.setInputSource (batch);
+            estimation.setInputTarget (model_tensors_);
+            pcl::Correspondences correspondences;
+            estimation.determineCorrespondences (correspondences);
+            report_.matches += correspondences.size ();
+            report_.comparisons += estimation.getComparisons ();
+            report_.timings.matching_ms += watch.getTime ();
+            watch.reset ();
+            std::vector<TensorMatch> matches = estimation.getMatches ();
+            if (budget > 0 && matches.size () > budget)
+            {
+              for (auto m = matches.begin () + static_cast<std::ptrdiff_t> (budget); m != matches.end (); ++m)
+              {
+                m->scene += static_cast<int> (first);
+                deferred_.push_back (*m);
+              }
+              matches.resize (budget);
+            }
+            const bool done = verify (matches, *batch, first);
+            report_.timings.verification_ms += watch.getTime ();
+            return done;
+          }
+
+          /** Verify the matches search() deferred, all batches' together in the matcher's order, on
+            * \a scene_tensors, every batch's tensors in the order they were computed. */
+          void
+          finish (const pcl::PointCloud<pcl::TensorDescriptor>& scene_tensors)
+          {
+            pcl::StopWatch watch;
+            sortTensorMatches (deferred_, params_.order);
+            verify (deferred_, scene_tensors, 0);
+            deferred_.clear ();
+            report_.timings.verification_ms += watch.getTime ();
+          }
+
+        private:
+          bool
+          capReached () const
+          {
+            return params_.max_hypotheses > 0 && report_.hypotheses_tried >= static_cast<std::size_t> (params_.max_hypotheses);
+          }
+
+          bool
+          verify (const std::vector<TensorMatch>& matches, const pcl::PointCloud<pcl::TensorDescriptor>& batch, std::size_t first)
+          {
+            for (const TensorMatch& match : matches)
+            {
+              if (capReached ())
+                return true;
+              const Eigen::Matrix4f hypothesis = hypothesisOf (match, *model_tensors_, batch);
+              if (refuted_.contains (hypothesis))
+              {
+                ++report_.hypotheses_skipped;
+                continue;
+              }
+              ++report_.hypotheses_tried;
+              TensorVerificationResult result;
+              const bool verified = verification_.verify (hypothesis, result);
+              if (verified && accept_ && !accept_ (result))
+              {
+                // Refused by the caller (global verification): a close repeat converges to the same pose.
+                ++report_.hypotheses_refused;
+                refuted_.add (hypothesis);
+                continue;
+              }
+              if (verified)
+              {
+                report_.registered = true;
+                report_.transform = result.transform;
+                report_.winning_match = match;
+                report_.winning_match.scene += static_cast<decltype (match.scene)> (first);
+                report_.verification = result;
+                return true;
+              }
+              ++report_.failures[static_cast<std::size_t> (result.stage)];
+              if (result.stage == TensorVerificationStage::FINE_OVERLAP || result.stage == TensorVerificationStage::FINE_DIMENSIONS)
+                refuted_.add (hypothesis);
+            }
+            return capReached ();
+          }
+
+          pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr model_tensors_;
+          const TensorRegistrationParams& params_;
+          TensorRegistrationReport& report_;
+          const HypothesisAcceptor& accept_;
+          CorrespondenceRejectorTensorVerification verification_;
+          RefutedHypotheses refuted_{0.0, 0.0};
+          std::vector<TensorMatch> deferred_;  ///< scene indices into all batches' tensors
+      };
+    }
+
     void
     registerTensorViews (const shared_ptr<const PreparedScan>& model, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& model_tensors,
                          const shared_ptr<const PreparedScan>& scene, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& scene_tensors,
                          const ObjectDimensions& dims, const TensorRegistrationParams& params, TensorRegistrationReport& report,
                          const HypothesisAcceptor& accept)
     {
-      pcl::StopWatch watch;
-      report.model_tensors = model_tensors->size ();
+      resetReport (report, model_tensors->size (), dims);
       report.scene_tensors = scene_tensors->size ();
-      report.registered = false;
-      report.transform = Eigen::Matrix4f::Identity ();
-      report.failures.fill (0);
-      report.hypotheses_tried = 0;
-      report.hypotheses_skipped = 0;
-      report.hypotheses_refused = 0;
-      report.dimensions = dims;
       // A view without tensors (a plane: no two normals theta_d apart) matches nothing: not registered.
       if (model_tensors->empty () || scene_tensors->empty ())
         return;
-      CorrespondenceEstimationTensor estimation;
-      configureMatcher (estimation, params);
-      estimation.setInputSource (scene_tensors);
-      estimation.setInputTarget (model_tensors);
-      pcl::Correspondences correspondences;
-      estimation.determineCorrespondences (correspondences);
-      report.matches = correspondences.size ();
-      report.comparisons = estimation.getComparisons ();
-      report.timings.matching_ms = watch.getTime ();
+      HypothesisSearch (model, model_tensors, scene, scene_tensors, dims, params, report, accept).search (scene_tensors, 0);
+    }
 
-      watch.reset ();
-      CorrespondenceRejectorTensorVerification verification;
-      configureVerifier (verification, model, model_tensors, scene, scene_tensors, dims, params);
-      report.resolution = verification.getResolution ();
-      RefutedHypotheses refuted (params.repeat_rotation, params.repeat_translation * report.resolution);
-      const std::vector<TensorMatch>& matches = estimation.getMatches ();
-      for (const TensorMatch& match : matches)
+    void
+    registerTensorViewsInBatches (const shared_ptr<const PreparedScan>& model, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& model_tensors,
+                                  const shared_ptr<const PreparedScan>& scene, const ObjectDimensions& dims,
+                                  const TensorRegistrationParams& params, TensorRegistrationReport& report,
+                                  const HypothesisAcceptor& accept)
+    {
+      resetReport (report, model_tensors->size (), dims);
+      if (model_tensors->empty ())
+        return;
+      // Every batch joins the scene's tensors, so that the winning match's index refers to them all.
+      pcl::PointCloud<pcl::TensorDescriptor>::Ptr scene_tensors (new pcl::PointCloud<pcl::TensorDescriptor>);
+      HypothesisSearch hypotheses (model, model_tensors, scene, scene_tensors, dims, params, report, accept);
+      const auto budget = static_cast<std::size_t> (params.batch_hypotheses);
+      for (int batch = 0; batch < params.scene_tensor_batches; ++batch)
       {
-        if (params.max_hypotheses > 0 && report.hypotheses_tried >= static_cast<std::size_t> (params.max_hypotheses))
-          break;
-        const Eigen::Matrix4f hypothesis = hypothesisOf (match, *model_tensors, *scene_tensors);
-        if (refuted.contains (hypothesis))
-        {
-          ++report.hypotheses_skipped;
-          continue;
-        }
-        ++report.hypotheses_tried;
-        TensorVerificationResult result;
-        const bool verified = verification.verify (hypothesis, result);
-        if (verified && accept && !accept (result))
-        {
-          // Refused by the caller (global verification): a close repeat converges to the same pose.
-          ++report.hypotheses_refused;
-          refuted.add (hypothesis);
-          continue;
-        }
-        if (verified)
-        {
-          report.registered = true;
-          report.transform = result.transform;
-          report.winning_match = match;
-          report.verification = result;
-          break;
-        }
-        ++report.failures[static_cast<std::size_t> (result.stage)];
-        if (result.stage == TensorVerificationStage::FINE_OVERLAP || result.stage == TensorVerificationStage::FINE_DIMENSIONS)
-          refuted.add (hypothesis);
+        pcl::StopWatch watch;
+        const auto tensors = computeViewTensors (*scene, dims, params, params.scene_tensor_batches, batch);
+        report.timings.tensors_ms += watch.getTime ();
+        const std::size_t first = scene_tensors->size ();
+        *scene_tensors += *tensors;
+        report.scene_tensors = scene_tensors->size ();
+        if (!tensors->empty () && hypotheses.search (tensors, first, budget))
+          return;
       }
-      report.timings.verification_ms = watch.getTime ();
+      hypotheses.finish (*scene_tensors);
     }
 
     void
@@ -268,10 +381,9 @@ namespace pcl
           : computeObjectDimensions<pcl::PointNormal> ({model->fine.cloud.get (), scene->fine.cloud.get ()});
       watch.reset ();
       const auto model_tensors = computeViewTensors (*model, dims, params_);
-      const auto scene_tensors = computeViewTensors (*scene, dims, params_);
       report_.timings.tensors_ms = watch.getTime ();
-
-      registerTensorViews (model, model_tensors, scene, scene_tensors, dims, params_, report_);
+      // The scene's tensors batch by batch, as the hypotheses need them (Fig. 7).
+      registerTensorViewsInBatches (model, model_tensors, scene, dims, params_, report_);
       if (report_.registered)
       {
         report_.transform = uncentred (report_.transform, model_centre, scene_centre);

@@ -155,6 +155,24 @@ namespace pcl
       /** \brief The pairing rule. */
       TensorPairing getPairing () const { return pairing_; }
 
+      /** \brief Compute the tensors of one batch of the pairs only: of the valid pairs in their sorted
+        * order, every \a batches-th, starting at \a batch. The batches of one view partition its
+        * tensors, spread evenly over the view. Fig. 7 computes the scene's tensors one at a time and
+        * stops once one match verifies; a caller can do the same a batch at a time
+        * (registerTensorViewsInBatches). Default: one batch, every pair.
+        * \throw pcl::BadArgumentException unless 0 <= batch < batches */
+      void setPairBatch (int batches, int batch)
+      {
+        if (batches < 1 || batch < 0 || batch >= batches)
+          PCL_TENSOR_THROW (BadArgumentException, "[pcl::TensorEstimation::setPairBatch] batch " << batch << " of "
+                            << batches << " is not one of the batches");
+        pair_batches_ = batches;
+        pair_batch_ = batch;
+      }
+      /** \brief Number of batches the pairs are split into, and the one computed. */
+      int getPairBatches () const { return pair_batches_; }
+      int getPairBatch () const { return pair_batch_; }
+
       /** \brief Set the angle below which the segment's elevation from the xy plane of the frame makes
         * the pair order ambiguous (order_ambiguous = 1). Not a paper parameter; default 5 degrees, the
         * size of the normal noise the paper allows for (Delta theta_d, Section 2).
@@ -229,6 +247,8 @@ namespace pcl
       double max_normal_angle_{175.0};
       int partners_per_vertex_{3};
       TensorPairing pairing_{TensorPairing::EITHER};
+      int pair_batches_{1};
+      int pair_batch_{0};
       double order_ambiguity_angle_{5.0};
       bool region_growing_{false};
       bool seed_every_component_{true};

@@ -23,6 +23,10 @@ namespace pcl
       BEST_FIRST
     };
 
+    /** \brief Put \a matches in \a order (stable: ties keep their order). */
+    void
+    sortTensorMatches (std::vector<TensorMatch>& matches, TensorMatchOrder order);
+
     /** \brief Matches the tensors of a scene view (source) against those of a model view (target),
       * as Section 4 does: each scene tensor is compared with the model tensors at theta_d +- Delta
       * theta_d in the index table; a pair matches when the overlap ratio R_O (Eq. 5) reaches t_r and

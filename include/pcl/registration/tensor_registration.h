@@ -55,6 +55,19 @@ namespace pcl
       double theta_bin_width = 5.0;
       /** The order in which matches are verified. */
       TensorMatchOrder order = TensorMatchOrder::BEST_FIRST;
+      /** TensorRegistration computes the scene's tensors in this many batches (every k-th vertex
+        * pair, TensorEstimation::setPairBatch), matching each and verifying its best matches before
+        * computing the next: Fig. 7 computes the scene's tensors one at a time and stops at the
+        * first verified match. 1 (default): all of them at once, then every match best first.
+        * 8 batches halve the tensor and matching time of bun000-bun045, but on a mirror-symmetric
+        * object a batch's best match can be the mirrored pose, which verification cannot tell from the
+        * true one (the surfaces coincide): TensorRegistration.SymmetricObjectGivesTheTruePoseOrNone
+        * then fails. Until an ambiguity check refuses such pairs, batches stay opt-in. */
+      int scene_tensor_batches = 1;
+      /** Matches of each batch verified before the next batch is computed (0: all of them). Those
+        * left over from every batch are verified together once all are computed, in order, so that a
+        * pair that needs many hypotheses meets them in nearly the order of a single batch. */
+      int batch_hypotheses = 10;
       /** Local verification (Section 4.1). */
       TensorVerificationParams verification;
       /** Hypotheses verified at most before giving up (0: all matches). Section 7.3 finds most
@@ -100,11 +113,13 @@ namespace pcl
     void
     checkParams (const TensorRegistrationParams& params);
 
-    /** \brief The tensors of one prepared view (Section 2), with Eq. 2 and Eq. 3 taken from \a dims.
+    /** \brief The tensors of one prepared view (Section 2), with Eq. 2 and Eq. 3 taken from \a dims;
+      * with \a batches > 1, only batch \a batch of its vertex pairs (TensorEstimation::setPairBatch).
       * \throw pcl::BadArgumentException or pcl::InvalidScanException on unusable input
       */
     pcl::PointCloud<pcl::TensorDescriptor>::Ptr
-    computeViewTensors (const PreparedScan& scan, const ObjectDimensions& dims, const TensorRegistrationParams& params);
+    computeViewTensors (const PreparedScan& scan, const ObjectDimensions& dims, const TensorRegistrationParams& params,
+                        int batches = 1, int batch = 0);
 
     /** \brief Set the matcher's thresholds, index and order from \a params. */
     void
@@ -139,6 +154,18 @@ namespace pcl
                          const shared_ptr<const PreparedScan>& scene, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& scene_tensors,
                          const ObjectDimensions& dims, const TensorRegistrationParams& params, TensorRegistrationReport& report,
                          const HypothesisAcceptor& accept = {});
+
+    /** \brief registerTensorViews(), with the scene's tensors computed in
+      * \a params.scene_tensor_batches batches: each batch is matched and its matches verified before
+      * the next is computed, and the search stops at the first hypothesis that passes (Fig. 7).
+      * \param[in,out] report filled in; the scene batches' time is added to its tensors time, and
+      *            scene_tensors counts the tensors computed
+      */
+    void
+    registerTensorViewsInBatches (const shared_ptr<const PreparedScan>& model, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& model_tensors,
+                                  const shared_ptr<const PreparedScan>& scene, const ObjectDimensions& dims,
+                                  const TensorRegistrationParams& params, TensorRegistrationReport& report,
+                                  const HypothesisAcceptor& accept = {});
 
     /** \brief Automatic pairwise registration of range images with tensors (Mian, Bennamoun & Owens,
       * IJCV 2006), used like pcl::SampleConsensusPrerejective: set the scene as source and the model as

@@ -263,11 +263,13 @@ pcl::TensorEstimation<PointInT, PointNT, PointOutT>::computeFeature (PointCloudO
   // One tensor per pair: frame (Section 2), canonical order, bins.
   const double sin_ambiguity = std::sin (order_ambiguity_angle_ / rad2deg);
   output.clear ();
-  output.reserve (pairs.size ());
+  const auto stride = static_cast<std::size_t> (pair_batches_);
+  output.reserve (pairs.size () / stride + 1);
   faces_visited_ = 0;
   faces_clipped_ = 0;
-  for (const auto& pr : pairs)
+  for (std::size_t k = static_cast<std::size_t> (pair_batch_); k < pairs.size (); k += stride)
   {
+    const auto& pr = pairs[k];
     int a = pr.first, b = pr.second;
     const Eigen::Vector3d z = (normals_unit_[a] + normals_unit_[b]).normalized ();
     Eigen::Vector3d d = vertices_[b] - vertices_[a];
