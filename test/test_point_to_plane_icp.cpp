@@ -60,6 +60,21 @@ namespace
     return params;
   }
 
+  /** The wavy surface as target, with its search, and every \a step-th point of it moved by the
+    * inverse of knownMotion() as source. */
+  struct KnownMotionCase
+  {
+    explicit KnownMotionCase (std::size_t step)
+      : target (wavySurface ()), truth (knownMotion ()), source (movedSample (target, truth, step))
+    {
+      search.setInputCloud (target);
+    }
+    pcl::PointCloud<pcl::PointNormal> target;
+    Eigen::Affine3d truth;
+    pcl::PointCloud<pcl::PointNormal> source;
+    pcl::BoundedNearestSearch search{2e-3f};
+  };
+
   void
   expectTruthRecovered (const Eigen::Matrix4f& estimate, const Eigen::Affine3d& truth)
   {
@@ -71,19 +86,15 @@ namespace
 
 TEST (PointToPlaneIcp, CoarseToFineRecoversAMotionBeyondItsFinalDistance)
 {
-  const auto target = wavySurface ();
-  const Eigen::Affine3d truth = knownMotion ();
-  const auto source = movedSample (target, truth, 7);
-  pcl::BoundedNearestSearch search (2e-3f);
-  search.setInputCloud (target);
+  const KnownMotionCase c (7);
   auto params = stagedParams ();
-  const auto staged = pcl::registration::pointToPlaneIcp (source, target, search, Eigen::Matrix4f::Identity (), params);
-  expectTruthRecovered (staged.transform, truth);
+  const auto staged = pcl::registration::pointToPlaneIcp (c.source, c.target, c.search, Eigen::Matrix4f::Identity (), params);
+  expectTruthRecovered (staged.transform, c.truth);
   EXPECT_LT (staged.rms, 1e-5);
   EXPECT_GT (staged.iterations, 0);
   // Four stages (8, 4, 2, 1 mm), so more iterations than the first stage alone.
   params.final_distance = 0.0;
-  const auto single = pcl::registration::pointToPlaneIcp (source, target, search, Eigen::Matrix4f::Identity (), params);
+  const auto single = pcl::registration::pointToPlaneIcp (c.source, c.target, c.search, Eigen::Matrix4f::Identity (), params);
   EXPECT_GE (staged.iterations, single.iterations + 3);
 }
 
@@ -105,18 +116,14 @@ TEST (PointToPlaneIcp, BadParametersAreRefused)
 
 TEST (PointToPlaneIcp, LooseCoarseStagesReachTheSamePoseInFewerIterations)
 {
-  const auto target = wavySurface ();
-  const Eigen::Affine3d truth = knownMotion ();
-  const auto source = movedSample (target, truth, 3);
-  pcl::BoundedNearestSearch search (2e-3f);
-  search.setInputCloud (target);
+  const KnownMotionCase c (3);
   auto params = stagedParams ();
   params.min_translation = 1e-7;
   params.coarse_stage_tolerance = 1.0;
-  const auto strict = pcl::registration::pointToPlaneIcp (source, target, search, Eigen::Matrix4f::Identity (), params);
+  const auto strict = pcl::registration::pointToPlaneIcp (c.source, c.target, c.search, Eigen::Matrix4f::Identity (), params);
   params.coarse_stage_tolerance = 1000.0;
-  const auto loose = pcl::registration::pointToPlaneIcp (source, target, search, Eigen::Matrix4f::Identity (), params);
+  const auto loose = pcl::registration::pointToPlaneIcp (c.source, c.target, c.search, Eigen::Matrix4f::Identity (), params);
   // The last stage still converges fully, so the pose is the one the strict schedule reaches.
-  expectTruthRecovered (loose.transform, truth);
+  expectTruthRecovered (loose.transform, c.truth);
   EXPECT_LT (loose.iterations, strict.iterations);
 }

@@ -4,6 +4,7 @@
  */
 #include <pcl/features/tensor_grid.h>
 #include <pcl/common/tensor_exceptions.h>
+#include "../common/union_find.h"
 
 #include <algorithm>
 #include <cmath>
@@ -72,19 +73,11 @@ namespace pcl
         vertex_faces_[fill[v]++] = static_cast<int> (f);
 
     // Connected components over shared vertices (union-find), and each one's longest edge.
-    std::vector<int> parent (n);
-    for (int i = 0; i < n; ++i)
-      parent[i] = i;
-    auto root = [&parent] (int x)
-    {
-      while (parent[x] != x)
-        x = parent[x] = parent[parent[x]];
-      return x;
-    };
+    detail::UnionFind pieces (static_cast<std::size_t> (n));
     for (const auto& t : faces_)
     {
-      parent[root (t[0])] = root (t[1]);
-      parent[root (t[1])] = root (t[2]);
+      pieces.unite (static_cast<std::size_t> (t[0]), static_cast<std::size_t> (t[1]));
+      pieces.unite (static_cast<std::size_t> (t[1]), static_cast<std::size_t> (t[2]));
     }
     std::vector<int> component_of_root (n, -1);
     std::vector<int> vertex_component (n, -1);
@@ -92,7 +85,7 @@ namespace pcl
     for (int i = 0; i < n; ++i)
       if (vertex_face_offsets_[i + 1] > vertex_face_offsets_[i])
       {
-        const int r = root (i);
+        const std::size_t r = pieces.find (static_cast<std::size_t> (i));
         if (component_of_root[r] < 0)
           component_of_root[r] = components++;
         vertex_component[i] = component_of_root[r];

@@ -3,6 +3,7 @@
  */
 #include <pcl/surface/quadric_mesh_reduction.h>
 #include <pcl/common/tensor_exceptions.h>
+#include "../common/union_find.h"
 
 #include <meshoptimizer.h>
 
@@ -10,7 +11,6 @@
 #include <array>
 #include <map>
 #include <limits>
-#include <numeric>
 
 namespace pcl
 {
@@ -69,32 +69,22 @@ namespace pcl
       out.cloud->is_dense = true;
     }
 
-    /** Union-find root with path halving. */
-    std::size_t
-    root (std::vector<std::size_t>& parent, std::size_t i)
-    {
-      while (parent[i] != i)
-        i = parent[i] = parent[parent[i]];
-      return i;
-    }
-
     /** The triangles whose vertex-connected component has at least \a min_faces faces, as a flat
       * index list (no copy of each triangle's index vector). */
     std::vector<unsigned int>
     largeComponents (const ScanMesh& mesh, std::size_t min_faces)
     {
-      std::vector<std::size_t> parent (mesh.cloud->size ());
-      std::iota (parent.begin (), parent.end (), std::size_t{0});
+      detail::UnionFind pieces (mesh.cloud->size ());
       for (const auto& poly : mesh.polygons)
         for (std::size_t k = 1; k < 3; ++k)
-          parent[root (parent, static_cast<std::size_t> (poly.vertices[k]))] = root (parent, static_cast<std::size_t> (poly.vertices[0]));
+          pieces.unite (static_cast<std::size_t> (poly.vertices[k]), static_cast<std::size_t> (poly.vertices[0]));
       std::vector<std::size_t> faces_in (mesh.cloud->size (), 0);
       for (const auto& poly : mesh.polygons)
-        ++faces_in[root (parent, static_cast<std::size_t> (poly.vertices[0]))];
+        ++faces_in[pieces.find (static_cast<std::size_t> (poly.vertices[0]))];
       std::vector<unsigned int> indices;
       indices.reserve (3 * mesh.polygons.size ());
       for (const auto& poly : mesh.polygons)
-        if (faces_in[root (parent, static_cast<std::size_t> (poly.vertices[0]))] >= min_faces)
+        if (faces_in[pieces.find (static_cast<std::size_t> (poly.vertices[0]))] >= min_faces)
           for (const auto v : poly.vertices)
             indices.push_back (static_cast<unsigned int> (v));
       return indices;

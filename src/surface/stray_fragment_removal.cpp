@@ -4,11 +4,11 @@
 #include <pcl/surface/stray_fragment_removal.h>
 #include <pcl/common/point_tests.h>
 #include <pcl/common/tensor_exceptions.h>
+#include "../common/union_find.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <numeric>
 #include <unordered_map>
 
 namespace pcl
@@ -26,15 +26,6 @@ namespace pcl
         return static_cast<std::size_t> (c[0] * 73856093LL ^ c[1] * 19349663LL ^ c[2] * 83492791LL);
       }
     };
-
-    /** Union-find root with path halving. */
-    std::size_t
-    root (std::vector<std::size_t>& parent, std::size_t i)
-    {
-      while (parent[i] != i)
-        i = parent[i] = parent[parent[i]];
-      return i;
-    }
   }
 
   std::vector<bool>
@@ -70,8 +61,7 @@ namespace pcl
     }
 
     // Occupied cells that touch (26-neighbourhood) belong to one group.
-    std::vector<std::size_t> parent (cells.size ());
-    std::iota (parent.begin (), parent.end (), std::size_t{0});
+    detail::UnionFind groups (cells.size ());
     for (std::size_t k = 0; k < cells.size (); ++k)
       for (int dx = -1; dx <= 1; ++dx)
         for (int dy = -1; dy <= 1; ++dy)
@@ -79,20 +69,20 @@ namespace pcl
           {
             const auto n = cell_ids.find (cells[k] + Cell (dx, dy, dz));
             if (n != cell_ids.end ())
-              parent[root (parent, n->second)] = root (parent, k);
+              groups.unite (n->second, k);
           }
 
     std::vector<std::size_t> group_size (cells.size (), 0);
     for (std::size_t i = 0; i < points.size (); ++i)
       if (pcl::isXYZFinite (points[i]))
-        ++group_size[root (parent, cell_of[i])];
+        ++group_size[groups.find (cell_of[i])];
     // The largest group is the scan, however scattered it is: never all of it stray.
     const std::size_t largest = static_cast<std::size_t> (std::max_element (group_size.begin (), group_size.end ()) - group_size.begin ());
     const double min_points = max_fraction * static_cast<double> (finite);
     for (std::size_t i = 0; i < points.size (); ++i)
       if (pcl::isXYZFinite (points[i]))
       {
-        const std::size_t group = root (parent, cell_of[i]);
+        const std::size_t group = groups.find (cell_of[i]);
         stray[i] = group != largest && static_cast<double> (group_size[group]) < min_points;
       }
     return stray;
