@@ -40,12 +40,15 @@ namespace
     print_info ("  --max-hypotheses N give up after N hypotheses, 0 = all (default %d)\n", d.max_hypotheses);
     print_info ("  --scene-batches N  compute SCENE's tensors in N batches, each verified before the next (default %d)\n",
                 d.scene_tensor_batches);
+    print_info ("  --ambiguity-checks N  hypotheses verified after one passes, looking for a second pose (default %d)\n",
+                d.ambiguity_checks);
     print_info ("  --nc F             n_c as a fraction of the smaller view (default %g)\n", d.verification.correspondence_fraction);
     print_info ("  --count both|scene views whose correspondences verification counts (default %s)\n",
                 d.verification.count_both_views ? "both" : "scene");
     print_info ("  --dims X,Y,Z       object dimensions D (default: from the two views, Eq. 1)\n");
     print_info ("  --viewpoint x,y,z  perspective sensor at x,y,z looking at each scan (default: a PCD's pose; the pushbroom a PLY grid fits; else +z)\n");
-    print_info ("Exit codes: 0 registered, 3 not registered (no hypothesis passed verification), 2 bad input or usage.\n");
+    print_info ("Exit codes: 0 registered, 3 not registered (no hypothesis passed verification, or two distinct poses did),\n"
+                "2 bad input or usage.\n");
   }
 
   pcl::registration::TensorRegistrationParams
@@ -59,6 +62,7 @@ namespace
     parse_argument (argc, argv, "--max-hypotheses", p.max_hypotheses);
     parse_argument (argc, argv, "--scene-batches", p.scene_tensor_batches);
     parse_argument (argc, argv, "--nc", p.verification.correspondence_fraction);
+    parse_argument (argc, argv, "--ambiguity-checks", p.ambiguity_checks);
     std::string order = "best";
     parse_argument (argc, argv, "--order", order);
     if (order == "scene")
@@ -73,18 +77,36 @@ namespace
     return p;
   }
 
+  /** A 4x4 matrix as a JSON array of 16 numbers, row-major. */
+  void
+  writeRowMajor (std::ostream& s, const Eigen::Matrix4f& m)
+  {
+    s << "[";
+    for (int i = 0; i < 16; ++i)
+      s << (i ? ", " : "") << m (i / 4, i % 4);
+    s << "]";
+  }
+
   std::string
   jsonReport (const pcl::registration::TensorRegistrationReport& r, double load_ms)
   {
     std::ostringstream s;
     s << std::setprecision (9);
-    s << "{\"status\": \"" << (r.registered ? "registered" : "not_registered") << "\", \"transform\": [";
-    for (int i = 0; i < 16; ++i)
-      s << (i ? ", " : "") << r.transform (i / 4, i % 4);
-    s << "], \"hypotheses_tried\": " << r.hypotheses_tried << ", \"hypotheses_skipped\": " << r.hypotheses_skipped
+    s << "{\"status\": \"" << (r.registered ? "registered" : "not_registered") << "\", \"transform\": ";
+    writeRowMajor (s, r.transform);
+    s << ", \"hypotheses_tried\": " << r.hypotheses_tried << ", \"hypotheses_skipped\": " << r.hypotheses_skipped
+      << ", \"ambiguity_checks\": " << r.ambiguity_checks << ", \"ambiguous\": " << (r.ambiguous ? "true" : "false")
       << ", \"matches\": " << r.matches
       << ", \"tensors\": {\"model\": " << r.model_tensors << ", \"scene\": " << r.scene_tensors << "}"
       << ", \"resolution\": " << r.resolution;
+    if (r.ambiguous)
+    {
+      s << ", \"rival_transforms\": [";
+      writeRowMajor (s, r.verification.transform);
+      s << ", ";
+      writeRowMajor (s, r.rival_transform);
+      s << "]";
+    }
     if (r.registered)
       s << ", \"winning_match\": {\"model_tensor\": " << r.winning_match.model << ", \"scene_tensor\": " << r.winning_match.scene
         << ", \"correlation\": " << r.winning_match.correlation << ", \"overlap_ratio\": " << r.winning_match.overlap_ratio
@@ -156,8 +178,12 @@ namespace
     }
     if (!report.registered)
     {
-      std::cerr << "pcl_tensor_register: not registered: none of " << report.hypotheses_tried
-                << " hypotheses passed verification" << std::endl;
+      if (report.ambiguous)
+        std::cerr << "pcl_tensor_register: not registered: ambiguous, two distinct poses passed verification "
+                     "(a symmetric object?); --json lists both" << std::endl;
+      else
+        std::cerr << "pcl_tensor_register: not registered: none of " << report.hypotheses_tried
+                  << " hypotheses passed verification" << std::endl;
       return kExitNotRegistered;
     }
     if (!output.empty () && pcl::io::savePLYFileBinary (output, aligned) < 0)

@@ -96,11 +96,12 @@ namespace
                  "  --data DIR     third-party data (default %s)\n"
                  "  --max-hypotheses N   tensor method's cap (default %d)\n"
                  "  --scene-batches N    tensor method: the scene's tensors in N batches, each verified before the next (default %d)\n"
+                 "  --faces N      tensor method: faces per reduced mesh (default %d)\n"
                  "  --count-scene-only   tensor method: verification counts the scene's correspondences only\n"
                  "                 (TensorVerificationParams::count_both_views off; default: both views)\n"
                  "  --checked-dimensions N  largest principal extents local verification compares with D (default %d)\n",
                  name, kQuickPairs, kQuickPairs, d.out.c_str (), d.data.c_str (), d.params.max_hypotheses,
-                 d.params.scene_tensor_batches, d.params.verification.checked_dimensions);
+                 d.params.scene_tensor_batches, d.params.preparation.target_faces, d.params.verification.checked_dimensions);
   }
 
   Options
@@ -112,6 +113,7 @@ namespace
     parse_argument (argc, argv, "--data", o.data);
     parse_argument (argc, argv, "--max-hypotheses", o.params.max_hypotheses);
     parse_argument (argc, argv, "--scene-batches", o.params.scene_tensor_batches);
+    parse_argument (argc, argv, "--faces", o.params.preparation.target_faces);
     parse_argument (argc, argv, "--pairs", o.max_pairs);
     if (pcl::console::find_switch (argc, argv, "--quick"))
       o.max_pairs = kQuickPairs;

@@ -159,22 +159,48 @@ TEST (TensorRegistration, ViewsOfDifferentObjectsAreNotRegistered)
 
 TEST (TensorRegistration, SymmetricObjectGivesTheTruePoseOrNone)
 {
-  // A bumpless ellipsoid has three mirror planes: a symmetric pose matches the tensors equally well,
-  // but verification must never accept one.
+  // A bumpless ellipsoid is symmetric under half turns about its axes: the turned pose fits the
+  // surfaces exactly as well as the true one and passes verification too. Whichever comes first, in
+  // one batch or eight, the second is found and the pair is reported ambiguous, never registered.
   pcl::ExampleObjectParams ellipsoid;
   ellipsoid.bumps = 0;
   const auto views = ringViews (pcl::makeExampleObject (ellipsoid));
-  for (const auto& [m, s] : std::vector<std::pair<int, int>>{{0, 1}, {2, 3}})
-  {
-    TensorRegistration registration;
-    const auto& report = registerViews (registration, views[m], views[s]);
-    if (!report.registered)
-      continue;
-    const auto error = pcl::registrationError (Eigen::Affine3d (report.transform.cast<double> ()),
-                                               groundTruth (views[m], views[s]), views[m].resolution);
-    EXPECT_LT (error.rotation_deg, 5.0) << "views " << m << "-" << s << ": a wrong pose was reported as verified";
-    EXPECT_LT (error.translation_resolutions, 20.0);
-  }
+  for (const int batches : {1, 8})
+    for (const auto& [m, s] : std::vector<std::pair<int, int>>{{0, 1}, {2, 3}})
+    {
+      SCOPED_TRACE ("views " + std::to_string (m) + "-" + std::to_string (s) + ", " + std::to_string (batches) + " batches");
+      pcl::registration::TensorRegistrationParams params;
+      params.scene_tensor_batches = batches;
+      TensorRegistration registration;
+      registration.setParams (params);
+      const auto& report = registerViews (registration, views[m], views[s]);
+      EXPECT_TRUE (report.ambiguous);
+      EXPECT_GE (report.ambiguity_checks, 1u);
+      if (!report.registered)
+        continue;
+      const auto error = pcl::registrationError (Eigen::Affine3d (report.transform.cast<double> ()),
+                                                 groundTruth (views[m], views[s]), views[m].resolution);
+      EXPECT_LT (error.rotation_deg, 5.0) << "a wrong pose was reported as verified";
+      EXPECT_LT (error.translation_resolutions, 20.0);
+    }
+
+  // Without the check, one of the four runs reports the turned pose as registered.
+  bool turned = false;
+  for (const int batches : {1, 8})
+    for (const auto& [m, s] : std::vector<std::pair<int, int>>{{0, 1}, {2, 3}})
+    {
+      pcl::registration::TensorRegistrationParams params;
+      params.scene_tensor_batches = batches;
+      params.ambiguity_checks = 0;
+      TensorRegistration registration;
+      registration.setParams (params);
+      const auto& report = registerViews (registration, views[m], views[s]);
+      EXPECT_FALSE (report.ambiguous);
+      turned = turned || (report.registered && pcl::registrationError (Eigen::Affine3d (report.transform.cast<double> ()),
+                                                                        groundTruth (views[m], views[s]), views[m].resolution)
+                                                       .rotation_deg > 90.0);
+    }
+  EXPECT_TRUE (turned);
 }
 
 TEST (TensorRegistration, ReportsBadInputLoudly)

@@ -47,6 +47,9 @@ namespace pcl
       if (!(params.repeat_rotation >= 0.0 && params.repeat_translation >= 0.0) ||
           !std::isfinite (params.repeat_rotation) || !std::isfinite (params.repeat_translation))
         PCL_TENSOR_THROW (BadArgumentException, "repeat tolerances must be finite and non-negative");
+      if (params.ambiguity_checks < 0 || !(params.ambiguity_rotation >= 0.0 && params.ambiguity_rotation <= 180.0))
+        PCL_TENSOR_THROW (BadArgumentException, "ambiguity checks must be non-negative and their rotation in [0, 180] degrees, got "
+                          << params.ambiguity_checks << " and " << params.ambiguity_rotation);
     }
 
     pcl::PointCloud<pcl::TensorDescriptor>::Ptr
@@ -67,6 +70,22 @@ namespace pcl
 
     namespace
     {
+      /** cos(angle / 2) of the rotation from \a b to \a a, from the trace, without acos. */
+      double
+      cosHalfAngleBetween (const Eigen::Matrix4f& a, const Eigen::Matrix4f& b)
+      {
+        const Eigen::Matrix3f d = a.topLeftCorner<3, 3> () * b.topLeftCorner<3, 3> ().transpose ();
+        return 0.5 * std::sqrt (std::max (0.0, 1.0 + static_cast<double> (d.trace ())));
+      }
+
+      /** Two poses within \a degrees of each other that put \a point within \a distance of the same place. */
+      bool
+      posesAgree (const Eigen::Matrix4f& a, const Eigen::Matrix4f& b, const Eigen::Vector4f& point, double degrees, double distance)
+      {
+        return cosHalfAngleBetween (a, b) >= std::cos (degrees * M_PI / 360.0) &&
+               static_cast<double> (((a - b) * point).norm ()) <= distance;
+      }
+
       /** Hypotheses that reached ICP and failed; a close repeat would fail the same way. */
       class RefutedHypotheses
       {
@@ -77,13 +96,8 @@ namespace pcl
           contains (const Eigen::Matrix4f& t) const
           {
             for (const auto& r : refuted_)
-            {
-              const Eigen::Matrix3f d = t.topLeftCorner<3, 3> () * r.topLeftCorner<3, 3> ().transpose ();
-              // cos(angle / 2) from the trace of the difference rotation, without acos.
-              const double cos_half = 0.5 * std::sqrt (std::max (0.0, 1.0 + static_cast<double> (d.trace ())));
-              if (cos_half >= cos_half_ && (t.topRightCorner<3, 1> () - r.topRightCorner<3, 1> ()).norm () <= distance_)
+              if (cosHalfAngleBetween (t, r) >= cos_half_ && (t.topRightCorner<3, 1> () - r.topRightCorner<3, 1> ()).norm () <= distance_)
                 return true;
-            }
             return false;
           }
 
@@ -140,6 +154,9 @@ namespace pcl
         report.hypotheses_tried = 0;
         report.hypotheses_skipped = 0;
         report.hypotheses_refused = 0;
+        report.ambiguity_checks = 0;
+        report.ambiguous = false;
+        report.rival_transform = Eigen::Matrix4f::Identity ();
         report.dimensions = dims;
         report.timings.matching_ms = 0.0;
         report.timings.verification_ms = 0.0;
@@ -154,7 +171,9 @@ namespace pcl
                             const shared_ptr<const PreparedScan>& scene, const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& scene_tensors,
                             const ObjectDimensions& dims, const TensorRegistrationParams& params, TensorRegistrationReport& report,
                             const HypothesisAcceptor& accept)
-            : model_tensors_ (model_tensors), params_ (params), report_ (report), accept_ (accept)
+            : model_tensors_ (model_tensors), params_ (params), report_ (report), accept_ (accept),
+              scene_centroid_ (centroidOf (*scene->fine.cloud)),
+              far_distance_ (0.5 * dims.mean ())
           {
             configureVerifier (verification_, model, model_tensors, scene, scene_tensors, dims, params);
             report.resolution = verification_.getResolution ();
@@ -178,17 +197,16 @@ namespace pcl
             report_.comparisons += estimation.getComparisons ();
             report_.timings.matching_ms += watch.getTime ();
             watch.reset ();
-            std::vector<TensorMatch> matches = estimation.getMatches ();
-            if (budget > 0 && matches.size () > budget)
-            {
-              for (auto m = matches.begin () + static_cast<std::ptrdiff_t> (budget); m != matches.end (); ++m)
+            const std::vector<TensorMatch> matches = estimation.getMatches ();
+            const std::size_t now = budget > 0 ? std::min (budget, matches.size ()) : matches.size ();
+            // The deferred matches may still serve as rivals of a pose this batch verifies.
+            const bool done = verify (matches, now, *batch, first);
+            if (!done)
+              for (auto m = matches.begin () + static_cast<std::ptrdiff_t> (now); m != matches.end (); ++m)
               {
-                m->scene += static_cast<int> (first);
                 deferred_.push_back (*m);
+                deferred_.back ().scene += static_cast<int> (first);
               }
-              matches.resize (budget);
-            }
-            const bool done = verify (matches, *batch, first);
             report_.timings.verification_ms += watch.getTime ();
             return done;
           }
@@ -200,7 +218,7 @@ namespace pcl
           {
             pcl::StopWatch watch;
             sortTensorMatches (deferred_, params_.order);
-            verify (deferred_, scene_tensors, 0);
+            verify (deferred_, deferred_.size (), scene_tensors, 0);
             deferred_.clear ();
             report_.timings.verification_ms += watch.getTime ();
           }
@@ -212,13 +230,72 @@ namespace pcl
             return params_.max_hypotheses > 0 && report_.hypotheses_tried >= static_cast<std::size_t> (params_.max_hypotheses);
           }
 
-          bool
-          verify (const std::vector<TensorMatch>& matches, const pcl::PointCloud<pcl::TensorDescriptor>& batch, std::size_t first)
+          static Eigen::Vector4f
+          centroidOf (const pcl::PointCloud<pcl::PointNormal>& cloud)
           {
-            for (const TensorMatch& match : matches)
+            Eigen::Vector4d sum = Eigen::Vector4d::Zero ();
+            for (const auto& p : cloud)
+              sum.head<3> () += p.getVector3fMap ().cast<double> ();
+            sum /= static_cast<double> (std::max<std::size_t> (1, cloud.size ()));
+            sum.w () = 1.0;
+            return sum.cast<float> ();
+          }
+
+          /** Local verification, then the caller's acceptor; refuted poses are remembered. */
+          bool
+          passes (const Eigen::Matrix4f& hypothesis, TensorVerificationResult& result)
+          {
+            if (!verification_.verify (hypothesis, result))
+            {
+              if (result.stage == TensorVerificationStage::FINE_OVERLAP || result.stage == TensorVerificationStage::FINE_DIMENSIONS)
+                refuted_.add (hypothesis);
+              return false;
+            }
+            if (accept_ && !accept_ (result))
+            {
+              // Refused by the caller (global verification): a close repeat converges to the same pose.
+              ++report_.hypotheses_refused;
+              refuted_.add (hypothesis);
+              return false;
+            }
+            return true;
+          }
+
+          /** A second pose, other than \a pose, that the matches after \a from also verify; the matches
+            * whose hypothesis is near \a pose are taken as leading to it and skipped. */
+          bool
+          findRival (const std::vector<TensorMatch>& matches, std::size_t from, const pcl::PointCloud<pcl::TensorDescriptor>& batch,
+                     const Eigen::Matrix4f& pose)
+          {
+            int checks = 0;
+            for (std::size_t k = from; k < matches.size () && checks < params_.ambiguity_checks; ++k)
+            {
+              const Eigen::Matrix4f hypothesis = hypothesisOf (matches[k], *model_tensors_, batch);
+              if (posesAgree (hypothesis, pose, scene_centroid_, params_.ambiguity_rotation, far_distance_) || refuted_.contains (hypothesis))
+                continue;
+              ++checks;
+              ++report_.ambiguity_checks;
+              TensorVerificationResult result;
+              if (passes (hypothesis, result) && !posesAgree (result.transform, pose, scene_centroid_, params_.repeat_rotation,
+                                                              params_.repeat_translation * report_.resolution))
+              {
+                report_.rival_transform = result.transform;
+                return true;
+              }
+            }
+            return false;
+          }
+
+          /** Verify the first \a count of \a matches in order; all of them may serve as rivals. */
+          bool
+          verify (const std::vector<TensorMatch>& matches, std::size_t count, const pcl::PointCloud<pcl::TensorDescriptor>& batch,
+                  std::size_t first)
+          {
+            for (std::size_t k = 0; k < count; ++k)
             {
               if (capReached ())
                 return true;
+              const TensorMatch& match = matches[k];
               const Eigen::Matrix4f hypothesis = hypothesisOf (match, *model_tensors_, batch);
               if (refuted_.contains (hypothesis))
               {
@@ -227,26 +304,21 @@ namespace pcl
               }
               ++report_.hypotheses_tried;
               TensorVerificationResult result;
-              const bool verified = verification_.verify (hypothesis, result);
-              if (verified && accept_ && !accept_ (result))
+              if (!passes (hypothesis, result))
               {
-                // Refused by the caller (global verification): a close repeat converges to the same pose.
-                ++report_.hypotheses_refused;
-                refuted_.add (hypothesis);
+                if (result.stage != TensorVerificationStage::PASSED)
+                  ++report_.failures[static_cast<std::size_t> (result.stage)];
                 continue;
               }
-              if (verified)
-              {
-                report_.registered = true;
+              // Two poses that both verify: no evidence picks one, so neither is reported.
+              report_.ambiguous = findRival (matches, k + 1, batch, result.transform);
+              report_.registered = !report_.ambiguous;
+              report_.winning_match = match;
+              report_.winning_match.scene += static_cast<decltype (match.scene)> (first);
+              report_.verification = result;
+              if (report_.registered)
                 report_.transform = result.transform;
-                report_.winning_match = match;
-                report_.winning_match.scene += static_cast<decltype (match.scene)> (first);
-                report_.verification = result;
-                return true;
-              }
-              ++report_.failures[static_cast<std::size_t> (result.stage)];
-              if (result.stage == TensorVerificationStage::FINE_OVERLAP || result.stage == TensorVerificationStage::FINE_DIMENSIONS)
-                refuted_.add (hypothesis);
+              return true;
             }
             return capReached ();
           }
@@ -257,6 +329,8 @@ namespace pcl
           const HypothesisAcceptor& accept_;
           CorrespondenceRejectorTensorVerification verification_;
           RefutedHypotheses refuted_{0.0, 0.0};
+          Eigen::Vector4f scene_centroid_;  ///< where poses are compared (homogeneous)
+          double far_distance_;             ///< mean(D) / 2: a pose moving the centroid farther is another pose
           std::vector<TensorMatch> deferred_;  ///< scene indices into all batches' tensors
       };
     }
@@ -384,11 +458,12 @@ namespace pcl
       report_.timings.tensors_ms = watch.getTime ();
       // The scene's tensors batch by batch, as the hypotheses need them (Fig. 7).
       registerTensorViewsInBatches (model, model_tensors, scene, dims, params_, report_);
+      if (report_.registered || report_.ambiguous)
+        report_.verification.transform = uncentred (report_.verification.transform, model_centre, scene_centre);
       if (report_.registered)
-      {
-        report_.transform = uncentred (report_.transform, model_centre, scene_centre);
-        report_.verification.transform = report_.transform;
-      }
+        report_.transform = report_.verification.transform;
+      if (report_.ambiguous)
+        report_.rival_transform = uncentred (report_.rival_transform, model_centre, scene_centre);
       converged_ = report_.registered;
       final_transformation_ = report_.transform;
       transformation_ = report_.transform;

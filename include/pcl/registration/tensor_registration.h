@@ -58,12 +58,12 @@ namespace pcl
       /** TensorRegistration computes the scene's tensors in this many batches (every k-th vertex
         * pair, TensorEstimation::setPairBatch), matching each and verifying its best matches before
         * computing the next: Fig. 7 computes the scene's tensors one at a time and stops at the
-        * first verified match. 1 (default): all of them at once, then every match best first.
-        * 8 batches halve the tensor and matching time of bun000-bun045, but on a mirror-symmetric
-        * object a batch's best match can be the mirrored pose, which verification cannot tell from the
-        * true one (the surfaces coincide): TensorRegistration.SymmetricObjectGivesTheTruePoseOrNone
-        * then fails. Until an ambiguity check refuses such pairs, batches stay opt-in. */
-      int scene_tensor_batches = 1;
+        * first verified match.
+        * 1: all of them at once, then every match best first. 8 (default) halve the tensor and
+        * matching time of bun000-bun045 with the same outcome on every real pair. On a symmetric
+        * object a batch's best match can be the turned pose, which verification cannot tell from the
+        * true one (the surfaces coincide); the ambiguity check (ambiguity_checks) refuses such pairs. */
+      int scene_tensor_batches = 8;
       /** Matches of each batch verified before the next batch is computed (0: all of them). Those
         * left over from every batch are verified together once all are computed, in order, so that a
         * pair that needs many hypotheses meets them in nearly the order of a single batch. */
@@ -78,6 +78,18 @@ namespace pcl
         * refuted is skipped: ICP would take it to the same wrong minimum. 0 disables. */
       double repeat_rotation = 3.0;
       double repeat_translation = 3.0;
+      /** Beyond the paper: once a hypothesis passes, up to this many of the next hypotheses whose
+        * pose is far from it (ambiguity_rotation, or the scene's centroid put mean(D)/2 away) are
+        * verified too. If one of them also passes at a pose other than the first (beyond the repeat
+        * tolerances), the surfaces fit in two ways (a symmetric object: every pose of a bumpless
+        * ellipsoid passes together with its 180-degree turn) and the pair is reported ambiguous, not
+        * registered, instead of whichever pose came first. 0 disables the check. */
+      int ambiguity_checks = 2;
+      /** Hypotheses within this rotation (degrees) of the passed pose, putting the scene's centroid
+        * within mean(D)/2 of where it does, are taken as leading to it and not checked: from 25-50
+        * degrees off, ICP takes bun045's hypotheses to the pose of bun000-bun045 that passed, at 20 ms
+        * each. A symmetry finer than this (a sixfold one, a cylinder's) is not detected. */
+      double ambiguity_rotation = 60.0;
     };
 
     /** \brief What one pairwise registration did: one object for apps, JSON and the bench. */
@@ -94,6 +106,11 @@ namespace pcl
       /** Hypotheses that passed local verification but that the caller's HypothesisAcceptor refused
         * (global verification, Section 4.2). */
       std::size_t hypotheses_refused = 0;
+      /** Hypotheses verified after one passed, looking for a second pose (ambiguity_checks). */
+      std::size_t ambiguity_checks = 0;
+      /** Two distinct poses passed verification: not registered (rival_transform is the second). */
+      bool ambiguous = false;
+      Eigen::Matrix4f rival_transform = Eigen::Matrix4f::Identity ();
       /** How many hypotheses failed at each stage (index: TensorVerificationStage). */
       std::array<std::size_t, kTensorVerificationStages> failures{};
       TensorMatch winning_match;                ///< valid when registered
