@@ -69,7 +69,7 @@ HEAD
 section efficiency "Efficiency (Fig. 17, Eq. 13)" \
   "Pairs with overlap ≥ 0.5. Scene order is the paper's (Fig. 7): scene tensors in turn, each one's matches best first; the count is the index of the winning scene tensor. Index speed-up: the same matching with the θ_d index table (±Δθ_d) and all against all."
 section overlap "Overlap, and PCL's FPFH baseline (Fig. 18)" \
-  "Every pair of both objects, overlap by Eq. 14 (vertices of M_i within 2 d_res, ground-truth poses). Baseline: PCL's FPFH + SampleConsensusPrerejective with its tutorial's parameters scaled to d_res (bench/EVAL.md), then the same point-to-plane ICP. Times exclude what is computed once per view (tensors; FPFH features)." \
+  "Every pair of both objects, overlap by Eq. 14 (vertices of M_i within 2 d_res, ground-truth poses). Baseline: PCL's FPFH + SampleConsensusPrerejective with its tutorial's parameters scaled to d_res (bench/EVAL.md), then the same point-to-plane ICP. Times exclude what is computed once per view (the model's tensors; FPFH features); since the scene's tensors come in batches (the default), the batches a pair needs are computed in its time." \
   "$dir/summary_baseline.csv"
 section accuracy "Accuracy (Fig. 13)" \
   "Synthetic views of bun_zipper.ply, dragon_vrip_res3.ply and the built-in example object. Eq. 12 is measured at the view frame's origin, about 0.3 m from the object, so each 0.01° of rotation error adds about 0.05 d_res there; the centroid row measures the displacement of the scene's centroid instead."
