@@ -35,6 +35,40 @@ TEST (ScanMeshNormals, BothMethodsRecoverAPlaneNormalTowardTheSensor)
   }
 }
 
+TEST (ScanPreparation, ReductionFromEverySecondRowAndColumnStaysOnTheSurface)
+{
+  // A dome z = 0.2 - (x^2 + y^2) on a 200 x 200 grid: reduced from the 100 x 100 subgrid, M'_i still
+  // has the target's faces, every vertex on the surface, and its normals from the full grid.
+  pcl::PointCloud<pcl::PointXYZ> dome (200, 200);
+  for (int r = 0; r < 200; ++r)
+    for (int c = 0; c < 200; ++c)
+    {
+      const float x = 0.002f * (c - 100), y = 0.002f * (r - 100);
+      dome.at (c, r) = pcl::PointXYZ (x, y, 0.2f - (x * x + y * y));
+    }
+  for (const int step : {1, 2})
+  {
+    pcl::ScanPreparationParams params;
+    params.target_faces = 400;
+    params.reduction_grid_step = step;
+    const pcl::PreparedScan scan = pcl::prepareScan (dome, pcl::ScanViewpoint::fromPositiveZ (), params);
+    EXPECT_NEAR (static_cast<double> (scan.reduced.polygons.size ()), 400.0, 40.0) << "step " << step;
+    EXPECT_NEAR (scan.resolution, 0.002, 0.0005);  // d_res is the full grid's
+    for (const auto& p : *scan.reduced.cloud)
+    {
+      EXPECT_NEAR (p.z, 0.2f - (p.x * p.x + p.y * p.y), 1e-6f);
+      const Eigen::Vector3f expected = Eigen::Vector3f (2.0f * p.x, 2.0f * p.y, 1.0f).normalized ();
+      EXPECT_GT (p.getNormalVector3fMap ().dot (expected), 0.999f);
+    }
+  }
+  // Too few points for the target on the subgrid: M_i itself is reduced, to the same mesh as step 1.
+  pcl::ScanPreparationParams coarse, fine;
+  coarse.target_faces = fine.target_faces = 4000;
+  coarse.reduction_grid_step = 2;
+  EXPECT_EQ (pcl::prepareScan (dome, pcl::ScanViewpoint::fromPositiveZ (), coarse).reduced.polygons.size (),
+             pcl::prepareScan (dome, pcl::ScanViewpoint::fromPositiveZ (), fine).reduced.polygons.size ());
+}
+
 TEST (ScanMeshNormals, BunnyNormalsAreUnitAndFaceTheSensor)
 {
   for (const auto& name : pcl_tensor_test::bunnyScanNames ())

@@ -7,6 +7,7 @@
 #include <pcl/surface/range_scan_triangulation.h>
 #include <pcl/surface/stray_fragment_removal.h>
 #include <pcl/common/tensor_exceptions.h>
+#include <pcl/common/point_tests.h>
 
 #include <cmath>
 
@@ -24,6 +25,8 @@ namespace pcl
         reduction.setTargetFaces (params.target_faces);
         normals.setMethod (params.normal_method);
         normals.setRadiusResolutions (params.normal_radius_resolutions);
+        if (params.reduction_grid_step < 1)
+          PCL_TENSOR_THROW (BadArgumentException, "the reduction's grid step must be at least 1, got " << params.reduction_grid_step);
         if (!(params.stray_fragment_gap > 0.0) || !std::isfinite (params.stray_fragment_gap)
             || !(params.stray_fragment_fraction >= 0.0 && params.stray_fragment_fraction < 1.0))
           PCL_TENSOR_THROW (BadArgumentException, "stray fragments: the gap must be positive and finite and the fraction in [0, 1), got "
@@ -33,6 +36,40 @@ namespace pcl
       QuadricMeshReduction reduction;
       ScanMeshNormalEstimation normals;
     };
+  }
+
+  namespace
+  {
+    /** The mesh of every params.reduction_grid_step-th row and column of an organized \a cloud, or
+      * an empty mesh when M_i itself is to be reduced. */
+    ScanMesh
+    reductionInput (const pcl::PointCloud<pcl::PointXYZ>& cloud, const PreparationStages& stages,
+                    const ScanPreparationParams& params, double resolution)
+    {
+      ScanMesh coarse;
+      const auto step = static_cast<std::uint32_t> (params.reduction_grid_step);
+      if (step <= 1 || !cloud.isOrganized ())
+        return coarse;
+      pcl::PointCloud<pcl::PointXYZ> grid;
+      grid.reserve (static_cast<std::size_t> ((cloud.width + step - 1) / step) * ((cloud.height + step - 1) / step));
+      std::size_t finite = 0;
+      for (std::uint32_t r = 0; r < cloud.height; r += step)
+        for (std::uint32_t c = 0; c < cloud.width; c += step)
+        {
+          grid.push_back (cloud.at (c, r));
+          finite += pcl::isXYZFinite (grid.back ()) ? 1 : 0;
+        }
+      // Too few points left for the target: reduce M_i itself.
+      if (finite < 16 * static_cast<std::size_t> (params.target_faces))
+        return coarse;
+      grid.width = (cloud.width + step - 1) / step;
+      grid.height = (cloud.height + step - 1) / step;
+      grid.is_dense = finite == grid.size ();
+      stages.triangulation.triangulate (grid, coarse);
+      if (!coarse.polygons.empty ())
+        removeStrayFragments (coarse, params.stray_fragment_gap * resolution, params.stray_fragment_fraction);
+      return coarse;
+    }
   }
 
   PreparedScan
@@ -45,7 +82,8 @@ namespace pcl
     // d_res of the whole mesh sets the gap; the fragments hold too few points to change it.
     scan.resolution = meshResolution (scan.fine);
     removeStrayFragments (scan.fine, params.stray_fragment_gap * scan.resolution, params.stray_fragment_fraction);
-    stages.reduction.reduce (scan.fine, scan.reduced);
+    const ScanMesh coarse = reductionInput (cloud, stages, params, scan.resolution);
+    stages.reduction.reduce (coarse.polygons.empty () ? scan.fine : coarse, scan.reduced);
     stages.normals.compute (scan.reduced, scan.fine, scan.resolution);
     scan.noise = estimateScanNoise (*scan.fine.cloud, 3.0 * scan.resolution);
     return scan;
