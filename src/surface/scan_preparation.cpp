@@ -60,7 +60,7 @@ namespace pcl
           finite += pcl::isXYZFinite (grid.back ()) ? 1 : 0;
         }
       // Too few points left for the target: reduce M_i itself.
-      if (finite < 16 * static_cast<std::size_t> (params.target_faces))
+      if (finite < 4 * static_cast<std::size_t> (params.target_faces))
         return coarse;
       grid.width = (cloud.width + step - 1) / step;
       grid.height = (cloud.height + step - 1) / step;

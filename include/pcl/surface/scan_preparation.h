@@ -28,7 +28,7 @@ namespace pcl
       * speck can set on its own. */
     double stray_fragment_fraction = 0.01;
     /** Beyond the paper: Garland-Heckbert reduces the mesh of every this-many-th row and column of
-      * an organized range image instead of M_i itself, when that mesh still has at least 16 points
+      * an organized range image instead of M_i itself, when that mesh still has at least 4 points
       * per target face (1: M_i). The reduction's cost grows with its input; M'_i keeps about one
       * vertex in 80 of M_i at 1000 faces, so the skipped points would be collapsed anyway. */
     int reduction_grid_step = 1;
