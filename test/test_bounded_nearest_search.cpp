@@ -79,6 +79,36 @@ TEST (BoundedNearestSearch, LatticeKnownAnswers)
   // A radius far larger than a cell scans more cells and stays exact.
   EXPECT_EQ (search.nearest ({-5.0f, 0.0f, 0.0f}, 6.0f, d2), 0);
   EXPECT_FLOAT_EQ (d2, 25.0f);
+  // A wide radius is answered from half a cell first: the tie at exactly that distance still goes to
+  // the lower index, and a nearest point just beyond it is found by the wide scan.
+  EXPECT_EQ (search.nearest ({1.5f, 2.0f, 3.0f}, 5.0f, d2), 57);
+  EXPECT_FLOAT_EQ (d2, 0.25f);
+  EXPECT_EQ (search.nearest ({1.5f, 2.5f, 3.0f}, 5.0f, d2), 57);
+  EXPECT_FLOAT_EQ (d2, 0.5f);
+  EXPECT_EQ (search.nearest ({1.5f, 2.5f, 3.5f}, 5.0f, d2), 57);
+  EXPECT_FLOAT_EQ (d2, 0.75f);
+}
+
+// Queries near a surface, with radii many cells wide, as a converging ICP asks them: the answer
+// found within half a cell is the nearest one of the whole radius.
+TEST (BoundedNearestSearch, NearSurfaceQueriesWithWideRadiiMatchBruteForce)
+{
+  const auto points = wavySheet (20000, 3);
+  const float spacing = 2.0f / std::sqrt (20000.0f);
+  pcl::BoundedNearestSearch search (2.0f * spacing);
+  search.setPoints (points);
+  std::mt19937 rng (9);
+  std::uniform_real_distribution<float> u (-0.9f, 0.9f), h (-1.0f, 1.0f);
+  for (int k = 0; k < 2000; ++k)
+  {
+    const float x = u (rng), y = u (rng);
+    // Up to 2 spacings off the sheet: within half a cell for some queries, beyond it for others.
+    const Eigen::Vector3f q (x, y, 0.1f * std::sin (7.0f * x) * std::cos (5.0f * y) + 2.0f * spacing * h (rng));
+    const float radius = spacing * (k % 2 == 0 ? 8.0f : 3.0f);
+    float brute_d2 = 0.0f, d2 = -1.0f;
+    ASSERT_EQ (search.nearest (q, radius, d2), bruteNearest (points, q, radius, brute_d2)) << "query " << k;
+    EXPECT_EQ (d2, brute_d2) << "query " << k;
+  }
 }
 
 // Against brute force and PCL's kd-tree on a noisy sheet, at the radii verification uses.

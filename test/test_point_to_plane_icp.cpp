@@ -127,3 +127,24 @@ TEST (PointToPlaneIcp, LooseCoarseStagesReachTheSamePoseInFewerIterations)
   expectTruthRecovered (loose.transform, c.truth);
   EXPECT_LT (loose.iterations, strict.iterations);
 }
+
+// min_pairs: a stage that ends with fewer pairs stops the refinement; one that has them goes on.
+TEST (PointToPlaneIcp, TooFewPairsAtACoarseStageStopTheRefinement)
+{
+  const KnownMotionCase c (7);
+  auto params = stagedParams ();
+  // Every source point pairs at 8 mm: a bar at the sample's size is met, and the result is unchanged.
+  params.min_pairs = c.source.size ();
+  const auto met = pcl::registration::pointToPlaneIcp (c.source, c.target, c.search, Eigen::Matrix4f::Identity (), params);
+  EXPECT_FALSE (met.stopped_early);
+  expectTruthRecovered (met.transform, c.truth);
+  // One pair more than the sample holds cannot be met: only the first stage runs.
+  params.min_pairs = c.source.size () + 1;
+  const auto stopped = pcl::registration::pointToPlaneIcp (c.source, c.target, c.search, Eigen::Matrix4f::Identity (), params);
+  EXPECT_TRUE (stopped.stopped_early);
+  params.min_pairs = 0;
+  params.final_distance = 0.0;
+  const auto first_stage = pcl::registration::pointToPlaneIcp (c.source, c.target, c.search, Eigen::Matrix4f::Identity (), params);
+  EXPECT_EQ (stopped.iterations, first_stage.iterations);
+  EXPECT_LT (stopped.iterations, met.iterations);
+}

@@ -202,17 +202,14 @@ namespace pcl
   {
     if (poly.n < 3)
       return;
-    double sx = 0.0, sy = 0.0, sz = 0.0;
-    const double* o = poly.p[0];
+    // The fan's area on the projection (about the first vertex, for precision); the pieces lie in the
+    // face's plane, so it is their area times |n_w|.
+    const int u = area_u_, v = area_v_;
+    const double ou = poly.p[0][u], ov = poly.p[0][v];
+    double twice = 0.0;
     for (int i = 1; i + 1 < poly.n; ++i)
-    {
-      const double ax = poly.p[i][0] - o[0], ay = poly.p[i][1] - o[1], az = poly.p[i][2] - o[2];
-      const double bx = poly.p[i + 1][0] - o[0], by = poly.p[i + 1][1] - o[1], bz = poly.p[i + 1][2] - o[2];
-      sx += ay * bz - az * by;
-      sy += az * bx - ax * bz;
-      sz += ax * by - ay * bx;
-    }
-    const double area = 0.5 * std::abs (sx * current_normal_.x () + sy * current_normal_.y () + sz * current_normal_.z ());
+      twice += (poly.p[i][u] - ou) * (poly.p[i + 1][v] - ov) - (poly.p[i + 1][u] - ou) * (poly.p[i][v] - ov);
+    const double area = area_scale_ * std::abs (twice);
     if (!(area > 0.0))
       return;
     touched_bits_[static_cast<std::size_t> (bin) >> 6] |= std::uint64_t (1) << (bin & 63);
@@ -291,7 +288,12 @@ namespace pcl
     ++stats_.faces_clipped;
     if (face_normals_[face].isZero ())
       return true;  // degenerate triangle: no area, but it still connects the region
-    current_normal_ = frame_ * face_normals_[face];
+    const Eigen::Vector3d normal = (frame_ * face_normals_[face]).cwiseAbs ();
+    int w = 0;
+    normal.maxCoeff (&w);
+    area_u_ = (w + 1) % 3;
+    area_v_ = (w + 2) % 3;
+    area_scale_ = 0.5 / normal[w];
     Polygon poly;
     poly.n = 3;
     for (int k = 0; k < 3; ++k)

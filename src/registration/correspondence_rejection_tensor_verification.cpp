@@ -72,6 +72,10 @@ namespace pcl
 
     namespace
     {
+      /** The samples' fine count must reach this share of 2 n_c before every point is counted: a little
+        * below 1, as a sample's count varies about the view's. */
+      constexpr double kSampledFineShare = 0.8;
+
       /** An even, deterministic sample of about \a n points: every k-th point. */
       pcl::PointCloud<pcl::PointNormal>::Ptr
       evenSample (const pcl::PointCloud<pcl::PointNormal>& cloud, int n)
@@ -92,6 +96,15 @@ namespace pcl
         inv.topRightCorner<3, 1> () = -inv.topLeftCorner<3, 3> () * t.topRightCorner<3, 1> ();
         return inv;
       }
+    }
+
+    double
+    CorrespondenceRejectorTensorVerification::scenePairsNeeded (double correspondences) const
+    {
+      // correspondences() scales the sample's count to the view and, counting both views, doubles the
+      // smaller of the two.
+      const double per_view = params_.count_both_views ? 0.5 * correspondences : correspondences;
+      return per_view * static_cast<double> (scene_sample_->size ()) / static_cast<double> (scene_->fine.cloud->size ());
     }
 
     double
@@ -184,9 +197,9 @@ namespace pcl
     {
       // The z-buffers are built only for hypotheses that got this far, once per pair of views.
       if (!model_view_)
-        model_view_ = std::make_unique<RangeViewProjection> (model_->fine, 3.0, 2.0, 16u << 20, model_->resolution);
+        model_view_ = std::make_unique<RangeViewProjection> (model_->fine, 3.0, 1.0, 16u << 20, model_->resolution);
       if (!scene_view_)
-        scene_view_ = std::make_unique<RangeViewProjection> (scene_->fine, 3.0, 2.0, 16u << 20, scene_->resolution);
+        scene_view_ = std::make_unique<RangeViewProjection> (scene_->fine, 3.0, 1.0, 16u << 20, scene_->resolution);
       return std::max (violationFraction (*scene_->fine.cloud, t, *model_view_, margin),
                        violationFraction (*model_->fine.cloud, inverseRigid (t), *scene_view_, margin));
     }
@@ -237,6 +250,9 @@ namespace pcl
       icp.max_distance = params_.icp_max_distance * d_res;
       icp.final_distance = params_.icp_final_distance * d_res;
       icp.min_translation = 1e-3 * d_res;
+      // Fewer pairs than the sampled fine count below needs, even at a coarse stage's wider distance: the
+      // hypothesis will fail there, and the finer stages need not run.
+      icp.min_pairs = static_cast<std::size_t> (std::floor (scenePairsNeeded (kSampledFineShare * 2.0 * result.required_correspondences)));
       const PointToPlaneIcpResult refined = pointToPlaneIcp (*scene_sample_, *model_->fine.cloud, model_search_, hypothesis, icp);
       result.transform = refined.transform;
       result.icp_fitness = refined.rms;
@@ -244,7 +260,7 @@ namespace pcl
       // Steps 11-12: twice n_c correspondences within d_res, over every point; the samples
       // reject clear failures first, since the full count costs a search per point.
       const double sampled = correspondences (*scene_sample_, *model_sample_, result.transform, params_.fine_distance * d_res);
-      if (sampled < 0.8 * 2.0 * result.required_correspondences)
+      if (sampled < kSampledFineShare * 2.0 * result.required_correspondences)
       {
         result.fine_correspondences = sampled;
         result.stage = TensorVerificationStage::FINE_OVERLAP;

@@ -113,6 +113,11 @@ namespace pcl
       iterate (source, target, search, params, distance, tolerance (distance), result);
       while (!is_last (distance))
       {
+        if (result.pairs < params.min_pairs)
+        {
+          result.stopped_early = true;
+          break;
+        }
         distance = std::max (0.5 * distance, params.final_distance);
         iterate (source, target, search, params, distance, tolerance (distance), result);
       }

@@ -122,6 +122,23 @@ namespace pcl
   int
   BoundedNearestSearch::nearest (const Eigen::Vector3f& query, float radius, float& sqr_distance) const
   {
+    // A point near the surface has its nearest neighbour within half a cell: search that small ball
+    // first. Whatever it finds is the exact answer (every nearer point lies in it too, ties included),
+    // and a converging ICP asks mostly such queries, each then scanning a few cells instead of (2 r /
+    // cell)^2 rows of them.
+    const float first = 0.5f * cell_;
+    if (radius > 2.0f * first)
+    {
+      const int index = nearestWithin (query, first, sqr_distance);
+      if (index >= 0)
+        return index;
+    }
+    return nearestWithin (query, radius, sqr_distance);
+  }
+
+  int
+  BoundedNearestSearch::nearestWithin (const Eigen::Vector3f& query, float radius, float& sqr_distance) const
+  {
     const float qx = query.x (), qy = query.y (), qz = query.z ();
     float best = radius * radius;
     std::int32_t best_index = -1;

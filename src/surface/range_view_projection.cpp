@@ -55,10 +55,10 @@ namespace pcl
       }
     }
 
-    /** Hop count from each vertex to the nearest vertex on a border edge (an edge of one triangle);
-      * vertices that no border reaches get the largest int. */
+    /** Hop count from each vertex to the nearest vertex on a border edge (an edge of one triangle),
+      * up to \a max_hops; vertices farther away, or that no border reaches, get the largest int. */
     std::vector<int>
-    borderHops (std::size_t vertex_count, const std::vector<pcl::Vertices>& polygons)
+    borderHops (std::size_t vertex_count, const std::vector<pcl::Vertices>& polygons, int max_hops)
     {
       // Each edge is listed under its lower vertex; sorting those short lists finds the edges used
       // once (a hash map of edges cost more than the rest of the z-buffer).
@@ -121,6 +121,8 @@ namespace pcl
       for (std::size_t head = 0; head < queue.size (); ++head)
       {
         const std::uint32_t v = queue[head];
+        if (hops[v] >= max_hops)
+          break;  // the queue is in hop order: every later vertex is as far
         for (std::uint32_t k = degree[v]; k < degree[v + 1]; ++k)
         {
           const std::uint32_t n = neighbours[k];
@@ -151,7 +153,8 @@ namespace pcl
         for (int k = 0; k < 3; ++k)
           normals[poly.vertices[k]] += n;
       }
-      const std::vector<int> hops = borderHops (s.size (), polygons);
+      // Beyond ramp_edges hops the ramp is 1 whatever the count.
+      const std::vector<int> hops = borderHops (s.size (), polygons, static_cast<int> (std::ceil (std::min (ramp_edges, 1e6))));
       std::vector<float> weights (s.size (), 0.0f);
       for (std::size_t i = 0; i < s.size (); ++i)
       {
@@ -192,17 +195,21 @@ namespace pcl
     // A pushbroom's y/z is scaled to a length at the median depth, so that square pixels suit it.
     depth_scale_ = model_ == ScanViewpoint::Model::pushbroom ? median_depth : 1.0f;
 
-    // The image covers the projections of the vertices a triangle uses.
+    // Retinal coordinates once per vertex (each is shared by about six triangles); the image covers
+    // those of the vertices a triangle uses.
+    std::vector<Retinal> uv (s.size ());
+    withModel (model_, [&] (auto model) {
+      for (std::size_t i = 0; i < s.size (); ++i)
+        uv[i].in_front = retinalAs<decltype (model)::value> (s[i], depth_scale_, uv[i].u, uv[i].v);
+    });
     float umin = std::numeric_limits<float>::max (), vmin = umin, umax = -umin, vmax = -umin;
     for (const auto& poly : mesh.polygons)
       for (const auto idx : poly.vertices)
-      {
-        float u, v;
-        if (!retinal (s[idx], u, v))
-          continue;
-        umin = std::min (umin, u), umax = std::max (umax, u);
-        vmin = std::min (vmin, v), vmax = std::max (vmax, v);
-      }
+        if (uv[idx].in_front)
+        {
+          umin = std::min (umin, uv[idx].u), umax = std::max (umax, uv[idx].u);
+          vmin = std::min (vmin, uv[idx].v), vmax = std::max (vmax, uv[idx].v);
+        }
     if (!(umax >= umin) || !(vmax >= vmin))
       PCL_TENSOR_THROW (InvalidScanException, "range view has no triangle in front of its sensor");
 
@@ -234,13 +241,15 @@ namespace pcl
       }
       return -p;
     };
-    rasterize (s, vertexWeights (s, mesh.polygons, toward_sensor, border_ramp_edges), mesh.polygons);
+    rayCoefficients (ray_origin_, ray_direction_);
+    const std::vector<float> weights = vertexWeights (s, mesh.polygons, toward_sensor, border_ramp_edges);
+    withModel (model_, [&] (auto model) { rasterizeAs<decltype (model)::value> (s, uv, weights, mesh.polygons); });
     buildTiles ();
   }
 
-  void
-  RangeViewProjection::rasterize (const std::vector<Eigen::Vector3f>& s, const std::vector<float>& weights,
-                                  const std::vector<pcl::Vertices>& polygons)
+  template <ScanViewpoint::Model M> void
+  RangeViewProjection::rasterizeAs (const std::vector<Eigen::Vector3f>& s, const std::vector<Retinal>& uv,
+                                    const std::vector<float>& weights, const std::vector<pcl::Vertices>& polygons)
   {
     triangle_.assign (static_cast<std::size_t> (width_) * height_, -1);
     std::vector<float> zbuf (triangle_.size (), std::numeric_limits<float>::max ());
@@ -249,30 +258,18 @@ namespace pcl
     const double pixel = 1.0 / inv_pixel_;
     for (const auto& poly : polygons)
     {
-      double u[3], v[3], w[3];
-      bool valid = true;
-      for (int k = 0; k < 3; ++k)
-      {
-        float uk = 0.0f, vk = 0.0f;
-        valid = valid && retinal (s[poly.vertices[k]], uk, vk);
-        u[k] = uk, v[k] = vk;
-        w[k] = weights[poly.vertices[k]];
-      }
+      const Retinal& p0 = uv[poly.vertices[0]];
+      const Retinal& p1 = uv[poly.vertices[1]];
+      const Retinal& p2 = uv[poly.vertices[2]];
+      if (!p0.in_front || !p1.in_front || !p2.in_front)
+        continue;
+      const double u[3] = {p0.u, p1.u, p2.u}, v[3] = {p0.v, p1.v, p2.v};
       const double eu1 = u[1] - u[0], ev1 = v[1] - v[0], eu2 = u[2] - u[0], ev2 = v[2] - v[0];
       const double det = eu1 * ev2 - eu2 * ev1;
       // Edge-on triangles cover no pixel centre reliably and their plane is ill-defined.
-      if (!valid || !(std::abs (det) > 1e-6 * pixel * pixel))
+      if (!(std::abs (det) > 1e-6 * pixel * pixel))
         continue;
-      Plane plane;
-      plane.u = static_cast<float> (u[0]);
-      plane.v = static_cast<float> (v[0]);
-      setDepthTerms (s[poly.vertices[0]], s[poly.vertices[1]], s[poly.vertices[2]], plane);
-      // The weight is affine in (u, v), relative to corner 0 for float precision.
-      plane.w0 = static_cast<float> (w[0]);
-      plane.wu = static_cast<float> (((w[1] - w[0]) * ev2 - (w[2] - w[0]) * ev1) / det);
-      plane.wv = static_cast<float> ((eu1 * (w[2] - w[0]) - eu2 * (w[1] - w[0])) / det);
-      const std::int32_t id = static_cast<std::int32_t> (planes_.size ());
-      planes_.push_back (plane);
+      const double inv_det = 1.0 / det;
 
       const double lo_u = std::min ({u[0], u[1], u[2]}), hi_u = std::max ({u[0], u[1], u[2]});
       const double lo_v = std::min ({v[0], v[1], v[2]}), hi_v = std::max ({v[0], v[1], v[2]});
@@ -281,26 +278,45 @@ namespace pcl
       const int c1 = std::min (width_ - 1, static_cast<int> (std::ceil ((hi_u - u0_) * inv_pixel_ - 0.5)));
       const int r0 = std::max (0, static_cast<int> (std::floor ((lo_v - v0_) * inv_pixel_ - 0.5)));
       const int r1 = std::min (height_ - 1, static_cast<int> (std::ceil ((hi_v - v0_) * inv_pixel_ - 0.5)));
+      if (c0 > c1 || r0 > r1)
+        continue;  // outside the image: never answers a query
+
+      Plane plane;
+      plane.u = static_cast<float> (u[0]);
+      plane.v = static_cast<float> (v[0]);
+      setDepthTerms (s[poly.vertices[0]], s[poly.vertices[1]], s[poly.vertices[2]], plane);
+      // The weight is affine in (u, v), relative to corner 0 for float precision.
+      const double w0 = weights[poly.vertices[0]], w1 = weights[poly.vertices[1]] - w0, w2 = weights[poly.vertices[2]] - w0;
+      plane.w0 = static_cast<float> (w0);
+      plane.wu = static_cast<float> ((w1 * ev2 - w2 * ev1) * inv_det);
+      plane.wv = static_cast<float> ((eu1 * w2 - eu2 * w1) * inv_det);
+      const std::int32_t id = static_cast<std::int32_t> (planes_.size ());
+      bool covers = false;
       // Barycentric inside test with a little slack so that shared edges leave no crack.
       const double eps = -1e-4;
       for (int r = r0; r <= r1; ++r)
       {
         const double pv = v0_ + (r + 0.5) * pixel - v[0];
+        const float dv = static_cast<float> (v0_ + (r + 0.5) * pixel) - plane.v;
         for (int c = c0; c <= c1; ++c)
         {
           const double pu = u0_ + (c + 0.5) * pixel - u[0];
-          const double b1 = (pu * ev2 - eu2 * pv) / det, b2 = (eu1 * pv - pu * ev1) / det;
+          const double b1 = (pu * ev2 - eu2 * pv) * inv_det, b2 = (eu1 * pv - pu * ev1) * inv_det;
           if (b1 < eps || b2 < eps || 1.0 - b1 - b2 < eps)
             continue;
-          const float z = surfaceDepth (plane, static_cast<float> (u0_ + (c + 0.5) * pixel), static_cast<float> (v0_ + (r + 0.5) * pixel));
+          const float z = depthAs<M> (plane, static_cast<float> (u0_ + (c + 0.5) * pixel) - plane.u, dv);
           const std::size_t cell = static_cast<std::size_t> (r) * width_ + c;
           if (z < zbuf[cell])
           {
             zbuf[cell] = z;
             triangle_[cell] = id;
+            covers = true;
           }
         }
       }
+      // A triangle that no pixel keeps is never looked up: its plane is not stored.
+      if (covers)
+        planes_.push_back (plane);
     }
   }
 
@@ -379,8 +395,8 @@ namespace pcl
     // both are written about the first corner's (u, v) for float precision.
     const Eigen::Vector3d corner = a.cast<double> ();
     const Eigen::Vector3d n = (b - a).cast<double> ().cross ((c - a).cast<double> ()).normalized ();
-    Eigen::Matrix3d origin, direction;
-    rayCoefficients (origin, direction);
+    const Eigen::Matrix3d& origin = ray_origin_;
+    const Eigen::Matrix3d& direction = ray_direction_;
     const Eigen::Vector3d at (1.0, plane.u, plane.v);
     const double a0 = n.dot (corner - origin * at), au = -n.dot (origin.col (1)), av = -n.dot (origin.col (2));
     const double b0 = n.dot (direction * at), bu = n.dot (direction.col (1)), bv = n.dot (direction.col (2));

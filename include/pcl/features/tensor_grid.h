@@ -157,7 +157,10 @@ namespace pcl
       Eigen::Vector3d origin_{Eigen::Vector3d::Zero ()};
       Eigen::Matrix3d frame_{Eigen::Matrix3d::Identity ()};
       double half_extent_{0.0};
-      Eigen::Vector3d current_normal_{Eigen::Vector3d::Zero ()};
+      /** The face being clipped is measured on the coordinate plane it is steepest over: its pieces'
+        * areas are their shoelace areas on the plane of axes (u, v), divided by |n_w| (w: the third). */
+      int area_u_ = 0, area_v_ = 1;
+      double area_scale_ = 0.5;
       std::vector<double> dense_;                       // N^3 accumulator, zero between calls
       std::vector<int> touched_;                        // bins made non-zero in this call, sorted
       std::vector<std::uint64_t> touched_bits_;         // bitmap of the same bins while accumulating

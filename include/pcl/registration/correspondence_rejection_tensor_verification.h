@@ -102,6 +102,9 @@ namespace pcl
           * (the samples or the whole views) to the whole views. */
         double correspondences (const PointCloudN& scene_points, const PointCloudN& model_points,
                                 const Eigen::Matrix4f& t, double radius) const;
+        /** Points of the scene's sample that must have a correspondence for correspondences() on the
+          * samples to reach \a correspondences. */
+        double scenePairsNeeded (double correspondences) const;
         /** The larger free-space violation of the two views under \a t (TensorVerificationParams). */
         double freeSpaceViolation (const Eigen::Matrix4f& t, double margin);
         /** max(D_combined - D) of the model points and the transformed scene points, in the best of

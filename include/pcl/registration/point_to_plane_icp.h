@@ -29,6 +29,11 @@ namespace pcl
         * stop at this many times min_rotation and min_translation (1: every stage converges as fully
         * as the last). 100 halves verification's ICP time on bun000-bun045 at the same final pose. */
       double coarse_stage_tolerance = 100.0;
+      /** A stage before the last that ends with fewer pairs than this ends the refinement (0: never).
+        * A later stage pairs within a smaller distance from about the same pose, so it cannot find the
+        * pairs this one lacked; a caller that needs so many close pairs spares the stages that would
+        * only confirm their absence. */
+      std::size_t min_pairs = 0;
     };
 
     /** \brief What pointToPlaneIcp() converged to. */
@@ -36,6 +41,7 @@ namespace pcl
     {
       Eigen::Matrix4f transform = Eigen::Matrix4f::Identity ();
       int iterations = 0;
+      bool stopped_early = false;  ///< a stage ended below min_pairs: the later stages did not run
       std::size_t pairs = 0;     ///< pairs used in the last iteration
       double rms = 0.0;          ///< RMS point-to-plane distance of those pairs
     };

@@ -24,7 +24,8 @@ namespace pcl
     *
     * Points are sorted by cell (a counting sort over a dense grid, x fastest), so the cells of one grid
     * row that a ball meets hold one contiguous run of points. Any radius can be asked; a query scans
-    * about (2 r + cell)^2 / d_res^2 points of a surface, so the cell should be near the radii asked.
+    * about (2 r + cell)^2 / d_res^2 points of a surface, so the cell should be near the radii asked;
+    * nearest() asks half a cell first and the whole radius only when that finds nothing.
     * The dense grid has at most max(4096, 4 n) cells for n points: when the bounding box needs more,
     * the cells are made larger (getCellSize()) and the answers stay exact.
     * \ingroup search
@@ -88,6 +89,9 @@ namespace pcl
 
       /** Cell ranges [lo, hi] met by the ball; false when it misses the grid or is not finite. */
       bool cellRange (const Eigen::Vector3f& query, float radius, int lo[3], int hi[3]) const;
+
+      /** nearest() by one scan of the cells within \a radius. */
+      int nearestWithin (const Eigen::Vector3f& query, float radius, float& sqr_distance) const;
 
       /** Calls \a visit (first, last) for each row of cells the ball meets; stops when it returns true. */
       template <typename Visit> bool forEachRow (const Eigen::Vector3f& query, float radius, Visit&& visit) const;

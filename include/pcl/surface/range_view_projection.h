@@ -93,8 +93,17 @@ namespace pcl
         float w0, wu, wv;      ///< weight there, and its slopes
       };
 
-      void rasterize (const std::vector<Eigen::Vector3f>& sensor_points, const std::vector<float>& weights,
-                      const std::vector<pcl::Vertices>& polygons);
+      /** A vertex's retinal coordinates, and whether it is in front of the sensor (retinal()). */
+      struct Retinal
+      {
+        float u = 0.0f, v = 0.0f;
+        bool in_front = false;
+      };
+
+      /** Each pixel keeps the nearest triangle whose projection covers its centre. */
+      template <ScanViewpoint::Model M>
+      void rasterizeAs (const std::vector<Eigen::Vector3f>& sensor_points, const std::vector<Retinal>& uv,
+                        const std::vector<float>& weights, const std::vector<pcl::Vertices>& polygons);
       void buildTiles ();
       bool pixelOf (float u, float v, int& col, int& row) const;
       /** Retinal coordinates of a sensor-frame point; false behind a perspective or pushbroom sensor. */
@@ -102,7 +111,8 @@ namespace pcl
       /** The line of sight through (u, v) is o + t r with o = origin (1, u, v)^T and r = direction (1, u, v)^T,
         * o.z = 0 and r.z = 1, so that t is the depth (sensor z) of the point it reaches. */
       void rayCoefficients (Eigen::Matrix3d& origin, Eigen::Matrix3d& direction) const;
-      /** The depth terms of the triangle (a, b, c) (sensor frame) about plane.u, plane.v. */
+      /** The depth terms of the triangle (a, b, c) (sensor frame) about plane.u, plane.v (needs
+        * ray_origin_ and ray_direction_). */
       void setDepthTerms (const Eigen::Vector3f& a, const Eigen::Vector3f& b, const Eigen::Vector3f& c, Plane& plane) const;
       /** The depth of \a plane at retinal offsets (du, dv) from its first corner, for one sensor model. */
       template <ScanViewpoint::Model M> static float depthAs (const Plane& plane, float du, float dv);
@@ -112,6 +122,7 @@ namespace pcl
       float surfaceDepth (const Plane& plane, float u, float v) const;
 
       Eigen::Affine3f scan_to_sensor_ = Eigen::Affine3f::Identity ();
+      Eigen::Matrix3d ray_origin_, ray_direction_;  ///< rayCoefficients(), for setDepthTerms()
       ScanViewpoint::Model model_ = ScanViewpoint::Model::perspective;
       /** Pushbroom: the depth at which v = y / z is scaled to a length (see retinal()). */
       float depth_scale_ = 1.0f;
