@@ -89,6 +89,30 @@ TEST (BoundedNearestSearch, LatticeKnownAnswers)
   EXPECT_FLOAT_EQ (d2, 0.75f);
 }
 
+// Successive queries along a line, as a view's points come: the hint answers most of them, and
+// every answer is the one without it.
+TEST (BoundedNearestSearch, HintedRunsAnswerAsWithout)
+{
+  const auto points = wavySheet (20000, 4);
+  const float spacing = 2.0f / std::sqrt (20000.0f);
+  pcl::BoundedNearestSearch search (2.0f * spacing);
+  search.setPoints (points);
+  std::int32_t hint = -1;
+  std::size_t within = 0;
+  for (int k = 0; k < 4000; ++k)
+  {
+    const float x = -1.0f + 2.0f * static_cast<float> (k) / 4000.0f, y = 0.3f;
+    const float z = 0.1f * std::sin (7.0f * x) * std::cos (5.0f * y) + (k % 7 == 0 ? 4.0f * spacing : 0.0f);
+    const Eigen::Vector3f q (x, y, z);
+    const bool expected = search.anyWithin (q, spacing);
+    ASSERT_EQ (search.anyWithin (q, spacing, hint), expected) << "query " << k;
+    within += expected ? 1 : 0;
+  }
+  // Both answers occur: the points off the sheet (every 7th) have no neighbour that near.
+  EXPECT_GT (within, 2000u);
+  EXPECT_LT (within, 3800u);
+}
+
 // Queries near a surface, with radii many cells wide, as a converging ICP asks them: the answer
 // found within half a cell is the nearest one of the whole radius.
 TEST (BoundedNearestSearch, NearSurfaceQueriesWithWideRadiiMatchBruteForce)
@@ -128,6 +152,7 @@ TEST (BoundedNearestSearch, MatchesBruteForceAndKdTree)
   std::mt19937 rng (5);
   std::uniform_real_distribution<float> u (-1.1f, 1.1f), h (-0.2f, 0.2f);
   std::size_t found = 0, missed = 0;
+  std::int32_t hint = -1;  // carried from query to query, as a count along a view does
   for (int k = 0; k < 3000; ++k)
   {
     const Eigen::Vector3f q (u (rng), u (rng), h (rng));
@@ -137,6 +162,7 @@ TEST (BoundedNearestSearch, MatchesBruteForceAndKdTree)
     const int got = search.nearest (q, radius, d2);
     ASSERT_EQ (got, brute) << "query " << k;
     EXPECT_EQ (search.anyWithin (q, radius), brute >= 0) << "query " << k;
+    EXPECT_EQ (search.anyWithin (q, radius, hint), brute >= 0) << "query " << k;
     if (got < 0)
     {
       ++missed;

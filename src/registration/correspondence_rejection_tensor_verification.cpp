@@ -159,8 +159,9 @@ namespace pcl
     {
       const float r = static_cast<float> (radius);
       std::size_t count = 0;
+      std::int32_t hint = -1;
       for (const auto& p : cloud)
-        count += search.anyWithin ((t * p.getVector4fMap ()).head<3> (), r) ? 1 : 0;
+        count += search.anyWithin ((t * p.getVector4fMap ()).head<3> (), r, hint) ? 1 : 0;
       return count;
     }
 

@@ -164,15 +164,28 @@ namespace pcl
   bool
   BoundedNearestSearch::anyWithin (const Eigen::Vector3f& query, float radius) const
   {
+    std::int32_t hint = -1;
+    return anyWithin (query, radius, hint);
+  }
+
+  bool
+  BoundedNearestSearch::anyWithin (const Eigen::Vector3f& query, float radius, std::int32_t& hint) const
+  {
     const float qx = query.x (), qy = query.y (), qz = query.z ();
     const float r2 = radius * radius;
+    const auto within = [&] (const Entry& e) {
+      const float dx = e.x - qx, dy = e.y - qy, dz = e.z - qz;
+      return dx * dx + dy * dy + dz * dz <= r2;
+    };
+    if (hint >= 0 && static_cast<std::size_t> (hint) < entries_.size () && within (entries_[hint]))
+      return true;
     return forEachRow (query, radius, [&] (const Entry* first, const Entry* last) {
       for (const Entry* e = first; e != last; ++e)
-      {
-        const float dx = e->x - qx, dy = e->y - qy, dz = e->z - qz;
-        if (dx * dx + dy * dy + dz * dz <= r2)
+        if (within (*e))
+        {
+          hint = static_cast<std::int32_t> (e - entries_.data ());
           return true;
-      }
+        }
       return false;
     });
   }

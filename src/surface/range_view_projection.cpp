@@ -182,12 +182,16 @@ namespace pcl
     for (std::size_t i = 0; i < s.size (); ++i)
       s[i] = scan_to_sensor_ * (*mesh.cloud)[i].getVector3fMap ();
 
-    // Depths of the vertices that triangles use, in front of a perspective or pushbroom sensor.
-    std::vector<float> depths;
+    // Depths of the vertices that triangles use (each once), in front of a perspective or pushbroom sensor.
+    std::vector<char> used (s.size (), 0);
     for (const auto& poly : mesh.polygons)
       for (const auto idx : poly.vertices)
-        if (model_ == ScanViewpoint::Model::orthographic || s[idx].z () > 0.0f)
-          depths.push_back (s[idx].z ());
+        used[idx] = 1;
+    std::vector<float> depths;
+    depths.reserve (s.size ());
+    for (std::size_t i = 0; i < s.size (); ++i)
+      if (used[i] && (model_ == ScanViewpoint::Model::orthographic || s[i].z () > 0.0f))
+        depths.push_back (s[i].z ());
     if (depths.empty ())
       PCL_TENSOR_THROW (InvalidScanException, "range view has no triangle in front of its sensor");
     std::nth_element (depths.begin (), depths.begin () + depths.size () / 2, depths.end ());
@@ -203,13 +207,12 @@ namespace pcl
         uv[i].in_front = retinalAs<decltype (model)::value> (s[i], depth_scale_, uv[i].u, uv[i].v);
     });
     float umin = std::numeric_limits<float>::max (), vmin = umin, umax = -umin, vmax = -umin;
-    for (const auto& poly : mesh.polygons)
-      for (const auto idx : poly.vertices)
-        if (uv[idx].in_front)
-        {
-          umin = std::min (umin, uv[idx].u), umax = std::max (umax, uv[idx].u);
-          vmin = std::min (vmin, uv[idx].v), vmax = std::max (vmax, uv[idx].v);
-        }
+    for (std::size_t i = 0; i < s.size (); ++i)
+      if (used[i] && uv[i].in_front)
+      {
+        umin = std::min (umin, uv[i].u), umax = std::max (umax, uv[i].u);
+        vmin = std::min (vmin, uv[i].v), vmax = std::max (vmax, uv[i].v);
+      }
     if (!(umax >= umin) || !(vmax >= vmin))
       PCL_TENSOR_THROW (InvalidScanException, "range view has no triangle in front of its sensor");
 
@@ -273,13 +276,15 @@ namespace pcl
 
       const double lo_u = std::min ({u[0], u[1], u[2]}), hi_u = std::max ({u[0], u[1], u[2]});
       const double lo_v = std::min ({v[0], v[1], v[2]}), hi_v = std::max ({v[0], v[1], v[2]});
-      // Pixel centres in the bounding box, rounded outward: the inside test below decides.
-      const int c0 = std::max (0, static_cast<int> (std::floor ((lo_u - u0_) * inv_pixel_ - 0.5)));
-      const int c1 = std::min (width_ - 1, static_cast<int> (std::ceil ((hi_u - u0_) * inv_pixel_ - 0.5)));
-      const int r0 = std::max (0, static_cast<int> (std::floor ((lo_v - v0_) * inv_pixel_ - 0.5)));
-      const int r1 = std::min (height_ - 1, static_cast<int> (std::ceil ((hi_v - v0_) * inv_pixel_ - 0.5)));
+      // The pixel centres in the bounding box, widened by more than the inside test's slack: at a pixel
+      // per d_res most triangles hold none, and they are done with here.
+      const double widen = 1e-3 * std::max (hi_u - lo_u, hi_v - lo_v);
+      const int c0 = std::max (0, static_cast<int> (std::ceil ((lo_u - widen - u0_) * inv_pixel_ - 0.5)));
+      const int c1 = std::min (width_ - 1, static_cast<int> (std::floor ((hi_u + widen - u0_) * inv_pixel_ - 0.5)));
+      const int r0 = std::max (0, static_cast<int> (std::ceil ((lo_v - widen - v0_) * inv_pixel_ - 0.5)));
+      const int r1 = std::min (height_ - 1, static_cast<int> (std::floor ((hi_v + widen - v0_) * inv_pixel_ - 0.5)));
       if (c0 > c1 || r0 > r1)
-        continue;  // outside the image: never answers a query
+        continue;
 
       Plane plane;
       plane.u = static_cast<float> (u[0]);

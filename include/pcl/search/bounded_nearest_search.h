@@ -68,6 +68,12 @@ namespace pcl
       /** \brief Whether any indexed point lies within \a radius of \a query (stops at the first found). */
       bool anyWithin (const Eigen::Vector3f& query, float radius) const;
 
+      /** \brief anyWithin() for a run of nearby queries: the point found last (\a hint, in and out;
+        * -1 to start) is tried before the cells. Successive points of a scan line mostly share it, so
+        * counting a whole view's correspondences scans the cells for few of them. The answer is the
+        * same as anyWithin()'s. */
+      bool anyWithin (const Eigen::Vector3f& query, float radius, std::int32_t& hint) const;
+
       /** \brief Every indexed point within \a radius of \a query, in ascending index order (so that
         * sums over them do not depend on the grid).
         * \return the number of points found */
