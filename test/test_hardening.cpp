@@ -352,6 +352,7 @@ TEST (HardeningParameters, OutOfRangeParametersThrowBadArgument)
     {"negative fine distance", [] (TensorRegistrationParams& p) { p.verification.fine_distance = -1.0; }},
     {"4 checked dimensions", [] (TensorRegistrationParams& p) { p.verification.checked_dimensions = 4; }},
     {"no sample points", [] (TensorRegistrationParams& p) { p.verification.sample_points = 0; }},
+    {"zero ICP coarse-stage step", [] (TensorRegistrationParams& p) { p.verification.icp_coarse_stage_step = 0; }},
   };
   for (const auto& [name, change] : cases)
   {

@@ -112,6 +112,9 @@ TEST (PointToPlaneIcp, BadParametersAreRefused)
   params.final_distance = 0.0;
   params.coarse_stage_tolerance = 0.5;
   EXPECT_THROW (pcl::registration::pointToPlaneIcp (target, target, search, Eigen::Matrix4f::Identity (), params), pcl::BadArgumentException);
+  params.coarse_stage_tolerance = 1.0;
+  params.coarse_stage_step = 0;
+  EXPECT_THROW (pcl::registration::pointToPlaneIcp (target, target, search, Eigen::Matrix4f::Identity (), params), pcl::BadArgumentException);
 }
 
 TEST (PointToPlaneIcp, LooseCoarseStagesReachTheSamePoseInFewerIterations)
@@ -147,4 +150,43 @@ TEST (PointToPlaneIcp, TooFewPairsAtACoarseStageStopTheRefinement)
   const auto first_stage = pcl::registration::pointToPlaneIcp (c.source, c.target, c.search, Eigen::Matrix4f::Identity (), params);
   EXPECT_EQ (stopped.iterations, first_stage.iterations);
   EXPECT_LT (stopped.iterations, met.iterations);
+}
+
+// coarse_stage_step: a coarse stage pairs a subsample and counts its pairs for the whole source; the
+// last stage pairs every point, so the pose is the one full stages reach.
+TEST (PointToPlaneIcp, SubsampledCoarseStagesReachTheSamePose)
+{
+  const KnownMotionCase c (3);
+  auto params = stagedParams ();
+  params.coarse_stage_step = 2;  // strides 8, 4, 2, 1 at 8, 4, 2, 1 mm
+  const auto subsampled = pcl::registration::pointToPlaneIcp (c.source, c.target, c.search, Eigen::Matrix4f::Identity (), params);
+  expectTruthRecovered (subsampled.transform, c.truth);
+  EXPECT_FALSE (subsampled.stopped_early);
+  // Every point pairs in the last stage, which no subsample runs.
+  EXPECT_EQ (subsampled.pairs, c.source.size ());
+}
+
+TEST (PointToPlaneIcp, SubsampledCoarseStagePairsOnlyItsSample)
+{
+  // Every odd point lies 30 mm off the surface: no stage pairs it. The first of two stages (8, then
+  // 4 mm) pairs every second point with a step of 2, i.e. only the even points, which all pair.
+  KnownMotionCase c (3);
+  for (std::size_t k = 1; k < c.source.size (); k += 2)
+    c.source[k].z += 30e-3f;
+  auto params = stagedParams ();
+  params.final_distance = 4e-3;
+  params.min_pairs = c.source.size () / 2 + 2;  // more than the even points, fewer than all
+  const auto full = pcl::registration::pointToPlaneIcp (c.source, c.target, c.search, Eigen::Matrix4f::Identity (), params);
+  EXPECT_TRUE (full.stopped_early);
+  params.coarse_stage_step = 2;
+  const auto subsampled = pcl::registration::pointToPlaneIcp (c.source, c.target, c.search, Eigen::Matrix4f::Identity (), params);
+  EXPECT_FALSE (subsampled.stopped_early);
+  expectTruthRecovered (subsampled.transform, c.truth);
+  EXPECT_EQ (subsampled.pairs, (c.source.size () + 1) / 2);  // the last stage pairs every point: the even ones
+  // A source too small to subsample (under 128 points) is paired whole at every stage.
+  const KnownMotionCase small (97);  // 104 points spread over the surface
+  params.min_pairs = small.source.size ();
+  const auto whole = pcl::registration::pointToPlaneIcp (small.source, small.target, small.search, Eigen::Matrix4f::Identity (), params);
+  EXPECT_FALSE (whole.stopped_early);
+  expectTruthRecovered (whole.transform, small.truth);
 }

@@ -25,10 +25,19 @@ TEST (RegistrationError, OneDegreeRotationGivesOneDegree)
   const Eigen::Matrix3d est = Eigen::AngleAxisd (M_PI / 180.0, Eigen::Vector3d (-2, 0, 1).normalized ()) * gt;
   EXPECT_NEAR (pcl::rotationErrorDeg (est, gt), 1.0, 1e-6);
   EXPECT_NEAR (pcl::rotationErrorDeg (gt, gt), 0.0, 1e-6);
-  // Rounding pushes (trace - 1) / 2 past 1 for equal rotations; the clamp keeps the answer a number.
+  // Rounding could push (trace - 1) / 2 past 1 for equal rotations; the answer stays a number.
   EXPECT_FALSE (std::isnan (pcl::rotationErrorDeg (Eigen::Matrix3d::Identity () * (1.0 + 1e-15), Eigen::Matrix3d::Identity ())));
   const Eigen::Matrix3d half_turn (Eigen::AngleAxisd (M_PI, Eigen::Vector3d::UnitZ ()));
   EXPECT_NEAR (pcl::rotationErrorDeg (half_turn, Eigen::Matrix3d::Identity ()), 180.0, 1e-6);
+}
+
+// A float pose (as every transform here is) keeps an angle of 0.001 deg: the trace alone, rounded to
+// float, would put it anywhere in 0-0.03 deg.
+TEST (RegistrationError, TinyRotationOfAFloatPoseIsMeasured)
+{
+  const Eigen::Matrix3d gt (Eigen::AngleAxisd (0.7, Eigen::Vector3d (1, 2, 3).normalized ()));
+  const Eigen::Matrix3f est = (Eigen::AngleAxisd (1e-3 * M_PI / 180.0, Eigen::Vector3d (-2, 0, 1).normalized ()) * gt).cast<float> ();
+  EXPECT_NEAR (pcl::rotationErrorDeg (est.cast<double> (), gt), 1e-3, 1e-4);
 }
 
 TEST (RegistrationError, ThreeResolutionsOfTranslationGiveThree)

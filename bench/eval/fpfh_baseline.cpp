@@ -99,6 +99,7 @@ namespace pcl_tensor_eval
     icp.max_iterations = icp_params.icp_iterations;
     icp.max_distance = icp_params.icp_max_distance * resolution;
     icp.final_distance = icp_params.icp_final_distance * resolution;
+    icp.coarse_stage_step = icp_params.icp_coarse_stage_step;
     pcl::BoundedNearestSearch search (static_cast<float> (icp.max_distance));
     search.setInputCloud (*model.points);
     result.transform = pcl::registration::pointToPlaneIcp (*scene.points, *model.points, search,

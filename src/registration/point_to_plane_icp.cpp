@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <vector>
 
 namespace pcl
 {
@@ -25,7 +26,7 @@ namespace pcl
       };
 
       Step
-      solveStep (const pcl::PointCloud<pcl::PointNormal>& source, const pcl::PointCloud<pcl::PointNormal>& target,
+      solveStep (const pcl::PointCloud<pcl::PointNormal>& source, std::size_t stride, const pcl::PointCloud<pcl::PointNormal>& target,
                  const pcl::BoundedNearestSearch& search, const Eigen::Matrix4f& t, double max_distance)
       {
         Eigen::Matrix<double, 6, 6> a = Eigen::Matrix<double, 6, 6>::Zero ();
@@ -33,8 +34,9 @@ namespace pcl
         const float radius = static_cast<float> (max_distance);
         Step step;
         double sum2 = 0.0;
-        for (const auto& p : source)
+        for (std::size_t i = 0; i < source.size (); i += stride)
         {
+          const auto& p = source[i];
           const Eigen::Vector3f q = (t * p.getVector4fMap ()).head<3> ();
           float d2;
           const int index = search.nearest (q, radius, d2);
@@ -69,14 +71,16 @@ namespace pcl
     {
       /** One stage: iterate at one pairing distance from \a result's pose, updating it in place. */
       void
-      iterate (const pcl::PointCloud<pcl::PointNormal>& source, const pcl::PointCloud<pcl::PointNormal>& target,
+      iterate (const pcl::PointCloud<pcl::PointNormal>& source, std::size_t stride, const pcl::PointCloud<pcl::PointNormal>& target,
                const pcl::BoundedNearestSearch& search, const PointToPlaneIcpParams& params, double max_distance,
                double tolerance, PointToPlaneIcpResult& result)
       {
         for (int it = 0; it < params.max_iterations; ++it)
         {
-          const Step step = solveStep (source, target, search, result.transform, max_distance);
-          result.pairs = step.pairs;
+          const Step step = solveStep (source, stride, target, search, result.transform, max_distance);
+          // Scaled to the whole source, so that a subsample whose points all pair counts as all of them.
+          const std::size_t sampled = (source.size () + stride - 1) / stride;
+          result.pairs = sampled ? step.pairs * source.size () / sampled : 0;
           result.rms = step.rms;
           if (!step.solved)
             break;
@@ -100,26 +104,30 @@ namespace pcl
                      const PointToPlaneIcpParams& params)
     {
       if (!(params.max_distance > 0.0) || params.max_iterations < 0 || !(params.final_distance >= 0.0)
-          || !(params.coarse_stage_tolerance >= 1.0) || !std::isfinite (params.coarse_stage_tolerance))
+          || !(params.coarse_stage_tolerance >= 1.0) || !std::isfinite (params.coarse_stage_tolerance) || params.coarse_stage_step < 1)
         PCL_TENSOR_THROW (BadArgumentException, "ICP needs a positive pairing distance, a non-negative final distance, "
-                          "a non-negative iteration count and a finite coarse-stage tolerance of at least 1");
+                          "a non-negative iteration count, a finite coarse-stage tolerance of at least 1 and a "
+                          "coarse-stage step of at least 1");
       PointToPlaneIcpResult result;
       result.transform = initial;
-      const auto is_last = [&params] (double distance) {
-        return !(params.final_distance > 0.0 && distance > params.final_distance);
-      };
-      const auto tolerance = [&] (double distance) { return is_last (distance) ? 1.0 : params.coarse_stage_tolerance; };
-      double distance = params.max_distance;
-      iterate (source, target, search, params, distance, tolerance (distance), result);
-      while (!is_last (distance))
+      // The pairing distances of the stages, halving from max_distance down to final_distance.
+      std::vector<double> stages{params.max_distance};
+      while (params.final_distance > 0.0 && stages.back () > params.final_distance)
+        stages.push_back (std::max (0.5 * stages.back (), params.final_distance));
+      for (std::size_t s = 0; s < stages.size (); ++s)
       {
-        if (result.pairs < params.min_pairs)
+        const bool last = s + 1 == stages.size ();
+        if (s > 0 && result.pairs < params.min_pairs)
         {
           result.stopped_early = true;
           break;
         }
-        distance = std::max (0.5 * distance, params.final_distance);
-        iterate (source, target, search, params, distance, tolerance (distance), result);
+        std::size_t stride = 1;
+        for (std::size_t k = s + 1; k < stages.size (); ++k)
+          stride *= static_cast<std::size_t> (params.coarse_stage_step);
+        // A subsample too small to solve for six unknowns would end the refinement for nothing.
+        stride = std::max<std::size_t> (1, std::min (stride, source.size () / 64));
+        iterate (source, stride, target, search, params, stages[s], last ? 1.0 : params.coarse_stage_tolerance, result);
       }
       return result;
     }

@@ -17,8 +17,11 @@ namespace pcl
   {
     // R_gt^-1 = R_gt^T for a rotation (Eq. 10).
     const Eigen::Matrix3d rd = rotation * ground_truth.transpose ();
-    const double c = std::clamp ((rd.trace () - 1.0) / 2.0, -1.0, 1.0);
-    return std::acos (c) * 180.0 / M_PI;
+    // Eq. 10's arccos((tr - 1) / 2), as atan2(sin, cos): sin theta is the norm of the skew part. Near
+    // 0 the arccos form loses the angle to the rounding of the trace (a float pose's 1e-7 is 0.03 deg),
+    // while the skew part keeps it to 1e-5 deg.
+    const Eigen::Vector3d skew (rd (2, 1) - rd (1, 2), rd (0, 2) - rd (2, 0), rd (1, 0) - rd (0, 1));
+    return std::atan2 (0.5 * skew.norm (), 0.5 * (rd.trace () - 1.0)) * 180.0 / M_PI;
   }
 
   double

@@ -34,6 +34,12 @@ namespace pcl
         * pairs this one lacked; a caller that needs so many close pairs spares the stages that would
         * only confirm their absence. */
       std::size_t min_pairs = 0;
+      /** A stage k stages before the last pairs only every (coarse_stage_step^k)-th source point (1:
+        * every stage pairs them all). A coarse stage pairs within a wide distance, where each query
+        * scans many cells, and only has to bring the pose within reach of the next stage; the last
+        * stage pairs every point, so the final pose rests on them all. Pair counts (min_pairs,
+        * PointToPlaneIcpResult::pairs) are scaled to the whole source. */
+      int coarse_stage_step = 1;
     };
 
     /** \brief What pointToPlaneIcp() converged to. */
@@ -42,7 +48,7 @@ namespace pcl
       Eigen::Matrix4f transform = Eigen::Matrix4f::Identity ();
       int iterations = 0;
       bool stopped_early = false;  ///< a stage ended below min_pairs: the later stages did not run
-      std::size_t pairs = 0;     ///< pairs used in the last iteration
+      std::size_t pairs = 0;     ///< pairs used in the last iteration (scaled to the whole source in a subsampled stage)
       double rms = 0.0;          ///< RMS point-to-plane distance of those pairs
     };
 

@@ -55,6 +55,10 @@ namespace pcl
         * at 0.3-0.5, one at 8 d_res 16/18 and 1/5; 8, 4, 2 registers 17/18 and 5/5, with fewer
         * hypotheses, none wrong. */
       double icp_final_distance = 2.0;
+      /** ICP: a stage k stages before the last pairs every (icp_coarse_stage_step^k)-th sampled point
+        * (PointToPlaneIcpParams::coarse_stage_step; 2: the stages at 8, 4 and 2 d_res pair a quarter,
+        * a half and all of them). 1: every stage pairs them all. */
+      int icp_coarse_stage_step = 2;
       /** Scene points sampled (evenly, deterministically) for ICP and the count before ICP. */
       int sample_points = 1000;
       /** Free space (beyond the paper): after ICP, a point of either view may lie in front of the
