@@ -64,6 +64,23 @@ namespace pcl_tensor_eval
         e.rotation_deg <= kMaxRotationErrorDeg && result.centroid_error_res <= kMaxTranslationErrorResolutions;
   }
 
+  namespace
+  {
+    /** A tensor registration's outcome on a pair, scored, with its counts and time. */
+    PairResult
+    scoredReport (const EvalView& model, const EvalView& scene, const pcl::registration::TensorRegistrationReport& report,
+                  double time_ms)
+    {
+      PairResult result;
+      result.time_ms = time_ms;
+      scoreTransform (model, scene, report.registered, report.transform, result);
+      result.hypotheses = report.hypotheses_tried;
+      result.matches = report.matches;
+      result.failures = report.failures;
+      return result;
+    }
+  }
+
   PairResult
   evaluateTensorPair (const EvalView& model, const EvalView& scene, const pcl::ObjectDimensions& dims,
                       const pcl::registration::TensorRegistrationParams& params,
@@ -76,14 +93,33 @@ namespace pcl_tensor_eval
       pcl::registration::registerTensorViewsInBatches (model.prepared, model.tensors, scene.prepared, dims, params, report);
     else
       pcl::registration::registerTensorViews (model.prepared, model.tensors, scene.prepared, scene.tensors, dims, params, report);
-    PairResult result;
-    result.time_ms = watch.getTime ();
-    scoreTransform (model, scene, report.registered, report.transform, result);
-    result.hypotheses = report.hypotheses_tried;
-    result.matches = report.matches;
-    result.failures = report.failures;
+    const PairResult result = scoredReport (model, scene, report, watch.getTime ());
     if (full_report)
       *full_report = report;
     return result;
+  }
+
+  pcl::registration::TensorRegistrationReport
+  registerRawScans (const pcl::PointCloud<pcl::PointXYZ>::Ptr& model, const pcl::ScanViewpoint& model_viewpoint,
+                    const pcl::PointCloud<pcl::PointXYZ>::Ptr& scene, const pcl::ScanViewpoint& scene_viewpoint,
+                    const pcl::registration::TensorRegistrationParams& params)
+  {
+    pcl::registration::TensorRegistration registration;
+    registration.setParams (params);
+    registration.setInputTarget (model);
+    registration.setInputSource (scene);
+    registration.setTargetViewpoint (model_viewpoint);
+    registration.setSourceViewpoint (scene_viewpoint);
+    pcl::PointCloud<pcl::PointXYZ> aligned;
+    registration.alignOrThrow (aligned);
+    return registration.getReport ();
+  }
+
+  PairResult
+  evaluateTensorRegistration (const EvalView& model, const EvalView& scene,
+                              const pcl::registration::TensorRegistrationParams& params)
+  {
+    const auto report = registerRawScans (model.cloud, model.viewpoint, scene.cloud, scene.viewpoint, params);
+    return scoredReport (model, scene, report, report.timings.total_ms);
   }
 }

@@ -58,4 +58,20 @@ namespace pcl_tensor_eval
   evaluateTensorPair (const EvalView& model, const EvalView& scene, const pcl::ObjectDimensions& dims,
                       const pcl::registration::TensorRegistrationParams& params,
                       pcl::registration::TensorRegistrationReport* report = nullptr);
+
+  /** \brief What pcl_tensor_register does after loading: pcl::registration::TensorRegistration of the
+    * scene's raw cloud to the model's, from their sensors, with D from the two alone.
+    */
+  pcl::registration::TensorRegistrationReport
+  registerRawScans (const pcl::PointCloud<pcl::PointXYZ>::Ptr& model, const pcl::ScanViewpoint& model_viewpoint,
+                    const pcl::PointCloud<pcl::PointXYZ>::Ptr& scene, const pcl::ScanViewpoint& scene_viewpoint,
+                    const pcl::registration::TensorRegistrationParams& params);
+
+  /** \brief Register the scene's raw scan to the model's as pcl_tensor_register does, and score it:
+    * pcl::registration::TensorRegistration from the two clouds and sensors, D from the pair alone.
+    * Its time is the registration after loading (TensorRegistrationReport::timings.total_ms).
+    */
+  PairResult
+  evaluateTensorRegistration (const EvalView& model, const EvalView& scene,
+                              const pcl::registration::TensorRegistrationParams& params);
 }

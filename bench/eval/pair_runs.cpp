@@ -21,19 +21,40 @@ namespace pcl_tensor_eval
     }
   }
 
+  namespace
+  {
+    /** \a evaluate (model view, scene view) on every pair, with its overlap and one line each. */
+    template <typename Evaluate> std::vector<PairResult>
+    runHypothesisPairs (const EvalViews& views, const std::vector<std::pair<int, int>>& pairs, Evaluate evaluate)
+    {
+      std::vector<PairResult> results;
+      for (const auto& [m, s] : pairs)
+      {
+        PairResult r = evaluate (views[m], views[s]);
+        r.overlap = pairOverlap (views[m], views[s]);
+        printPair (r, "hyp", r.hypotheses);
+        results.push_back (r);
+      }
+      return results;
+    }
+  }
+
   std::vector<PairResult>
   runTensorPairs (const EvalViews& views, const pcl::ObjectDimensions& dims, const std::vector<std::pair<int, int>>& pairs,
                   const pcl::registration::TensorRegistrationParams& params)
   {
-    std::vector<PairResult> results;
-    for (const auto& [m, s] : pairs)
-    {
-      PairResult r = evaluateTensorPair (views[m], views[s], dims, params);
-      r.overlap = pairOverlap (views[m], views[s]);
-      printPair (r, "hyp", r.hypotheses);
-      results.push_back (r);
-    }
-    return results;
+    return runHypothesisPairs (views, pairs, [&] (const EvalView& model, const EvalView& scene) {
+      return evaluateTensorPair (model, scene, dims, params);
+    });
+  }
+
+  std::vector<PairResult>
+  runTensorRegistrationPairs (const EvalViews& views, const std::vector<std::pair<int, int>>& pairs,
+                              const pcl::registration::TensorRegistrationParams& params)
+  {
+    return runHypothesisPairs (views, pairs, [&] (const EvalView& model, const EvalView& scene) {
+      return evaluateTensorRegistration (model, scene, params);
+    });
   }
 
   std::vector<FpfhView>

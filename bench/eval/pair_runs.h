@@ -18,6 +18,12 @@ namespace pcl_tensor_eval
   runTensorPairs (const EvalViews& views, const pcl::ObjectDimensions& dims, const std::vector<std::pair<int, int>>& pairs,
                   const pcl::registration::TensorRegistrationParams& params);
 
+  /** \brief Every pair registered as pcl_tensor_register does (evaluateTensorRegistration(): the raw
+    * scans, D from each pair alone); time_ms is the registration after loading. */
+  std::vector<PairResult>
+  runTensorRegistrationPairs (const EvalViews& views, const std::vector<std::pair<int, int>>& pairs,
+                              const pcl::registration::TensorRegistrationParams& params);
+
   /** \brief The FPFH baseline of every view, computed once (as the tensors are). */
   std::vector<FpfhView>
   computeFpfhViews (const EvalViews& views, const FpfhBaselineParams& params);
