@@ -75,11 +75,11 @@ namespace pcl
                const pcl::BoundedNearestSearch& search, const PointToPlaneIcpParams& params, double max_distance,
                double tolerance, PointToPlaneIcpResult& result)
       {
+        // Pair counts are scaled to the whole source, so that a subsample whose points all pair counts as all of them.
+        const std::size_t sampled = (source.size () + stride - 1) / stride;
         for (int it = 0; it < params.max_iterations; ++it)
         {
           const Step step = solveStep (source, stride, target, search, result.transform, max_distance);
-          // Scaled to the whole source, so that a subsample whose points all pair counts as all of them.
-          const std::size_t sampled = (source.size () + stride - 1) / stride;
           result.pairs = sampled ? step.pairs * source.size () / sampled : 0;
           result.rms = step.rms;
           if (!step.solved)
