@@ -12,15 +12,14 @@
 #include <pcl/console/time.h>
 #include <pcl/io/ply_io.h>
 #include <pcl/io/range_scan_io.h>
+#include <pcl/io/registration_report_json.h>
 #include <pcl/io/stanford_conf.h>
 #include <pcl/io/view_pairs_io.h>
 #include <pcl/registration/multiview_tensor_registration.h>
 #include <pcl/surface/scan_volumetric_integration.h>
 
 #include <filesystem>
-#include <iomanip>
 #include <iostream>
-#include <sstream>
 
 using namespace pcl::console;
 
@@ -167,31 +166,18 @@ namespace
   jsonSummary (const ModelOptions& o, const pcl::registration::MultiviewRegistrationResult& r,
                const pcl::VolumetricIntegrationReport& integration, const pcl::ScanMesh& model, const StageTimes& t)
   {
-    std::ostringstream s;
-    s << std::setprecision (9) << "{\"model\": \"" << o.output << "\", \"conf\": \"" << o.conf << "\", \"views\": [";
-    for (std::size_t i = 0; i < r.views.size (); ++i)
-    {
-      const auto& v = r.views[i];
-      s << (i ? ", " : "") << "{\"file\": \"" << v.name << "\", \"status\": \"" << (v.registered ? "registered" : "not_registered")
-        << "\", \"reference\": " << v.reference << ", \"pose\": [";
-      for (int k = 0; k < 16; ++k)
-        s << (k ? ", " : "") << v.pose.matrix () (k / 4, k % 4);
-      s << "], \"hypotheses_tried\": " << v.pairwise.hypotheses_tried << ", \"globally_refused\": " << v.globally_refused;
-      if (!v.error.empty ())
-        s << ", \"error\": \"" << v.error << "\"";
-      s << "}";
-    }
-    s << "], \"registered\": " << r.registeredCount () << ", \"resolution\": " << r.resolution
-      << ", \"global\": {\"iterations\": " << r.global.iterations << ", \"rms_before\": " << r.global.rms_before
-      << ", \"rms_after\": " << r.global.rms_after << "}"
-      << ", \"volume\": {\"voxel_size\": " << integration.voxel_size << ", \"voxels\": " << integration.voxels
-      << ", \"bytes\": " << integration.volume_bytes << "}"
-      << ", \"mesh\": {\"vertices\": " << model.cloud->size () << ", \"triangles\": " << model.polygons.size () << "}"
-      << ", \"timings_ms\": {\"load\": " << t.load_ms << ", \"meshing\": " << r.timings.prepare_ms
-      << ", \"tensors\": " << r.timings.tensors_ms << ", \"pairwise\": " << r.timings.pairwise_ms
-      << ", \"global\": " << r.timings.global_ms << ", \"integration\": " << t.integration_ms
-      << ", \"write\": " << t.write_ms << ", \"total\": " << t.total_ms << "}}";
-    return s.str ();
+    pcl::io::JsonReport j;
+    j["model"] = o.output;
+    j["conf"] = o.conf;
+    j.update (pcl::io::toJson (r));
+    j["volume"] = pcl::io::toJson (integration);
+    j["mesh"] = {{"vertices", model.cloud->size ()}, {"triangles", model.polygons.size ()}};
+    auto& timings = j["timings_ms"];
+    timings["load"] = t.load_ms;
+    timings["integration"] = t.integration_ms;
+    timings["write"] = t.write_ms;
+    timings["total"] = t.total_ms;
+    return pcl::io::dumpJson (j);
   }
 
   void
@@ -233,11 +219,14 @@ namespace
     StageTimes t;
     pcl_tensor_tools::ProgressBar progress;
 
+    // Parameters are checked before any view is read.
+    pcl::registration::MultiviewTensorRegistration registration;
+    registration.setParams (o.registration);
+    pcl::ScanVolumetricIntegration integration;
+    integration.setParams (o.integration);
     timer.tic ();
     const auto inputs = loadViews (o.views, argc, argv);
     t.load_ms = timer.toc ();
-    pcl::registration::MultiviewTensorRegistration registration;
-    registration.setParams (o.registration);
     if (!o.pairs.empty ())
       registration.setPairs (pcl::io::loadViewPairs (o.pairs, o.views));
     registration.setProgressCallback ([&progress] (pcl::registration::MultiviewStage stage, std::size_t done, std::size_t n) {
@@ -247,8 +236,6 @@ namespace
 
     timer.tic ();
     progress.update ("integration", 0, 1);
-    pcl::ScanVolumetricIntegration integration;
-    integration.setParams (o.integration);
     integration.setInputViews (pcl::registration::registeredIntegrationViews (result));
     pcl::ScanMesh model;
     integration.reconstruct (model);

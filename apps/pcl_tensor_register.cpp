@@ -10,11 +10,10 @@
 #include <pcl/console/time.h>
 #include <pcl/io/ply_io.h>
 #include <pcl/io/range_scan_io.h>
+#include <pcl/io/registration_report_json.h>
 #include <pcl/registration/tensor_registration.h>
 
-#include <iomanip>
 #include <iostream>
-#include <sstream>
 
 using namespace pcl::console;
 
@@ -77,49 +76,12 @@ namespace
     return p;
   }
 
-  /** A 4x4 matrix as a JSON array of 16 numbers, row-major. */
-  void
-  writeRowMajor (std::ostream& s, const Eigen::Matrix4f& m)
-  {
-    s << "[";
-    for (int i = 0; i < 16; ++i)
-      s << (i ? ", " : "") << m (i / 4, i % 4);
-    s << "]";
-  }
-
   std::string
   jsonReport (const pcl::registration::TensorRegistrationReport& r, double load_ms)
   {
-    std::ostringstream s;
-    s << std::setprecision (9);
-    s << "{\"status\": \"" << (r.registered ? "registered" : "not_registered") << "\", \"transform\": ";
-    writeRowMajor (s, r.transform);
-    s << ", \"hypotheses_tried\": " << r.hypotheses_tried << ", \"hypotheses_skipped\": " << r.hypotheses_skipped
-      << ", \"ambiguity_checks\": " << r.ambiguity_checks << ", \"ambiguous\": " << (r.ambiguous ? "true" : "false")
-      << ", \"matches\": " << r.matches
-      << ", \"tensors\": {\"model\": " << r.model_tensors << ", \"scene\": " << r.scene_tensors << "}"
-      << ", \"resolution\": " << r.resolution;
-    if (r.ambiguous)
-    {
-      s << ", \"rival_transforms\": [";
-      writeRowMajor (s, r.verification.transform);
-      s << ", ";
-      writeRowMajor (s, r.rival_transform);
-      s << "]";
-    }
-    if (r.registered)
-      s << ", \"winning_match\": {\"model_tensor\": " << r.winning_match.model << ", \"scene_tensor\": " << r.winning_match.scene
-        << ", \"correlation\": " << r.winning_match.correlation << ", \"overlap_ratio\": " << r.winning_match.overlap_ratio
-        << ", \"n_q\": " << r.winning_match.n_q << "}, \"icp_fitness\": " << r.verification.icp_fitness
-        << ", \"fine_correspondences\": " << r.verification.fine_correspondences;
-    s << ", \"failures\": {";
-    for (std::size_t k = 1; k < r.failures.size (); ++k)
-      s << (k > 1 ? ", " : "") << "\"" << pcl::registration::toString (static_cast<pcl::registration::TensorVerificationStage> (k))
-        << "\": " << r.failures[k];
-    s << "}, \"timings_ms\": {\"load\": " << load_ms << ", \"prepare\": " << r.timings.prepare_ms << ", \"tensors\": "
-      << r.timings.tensors_ms << ", \"matching\": " << r.timings.matching_ms << ", \"verification\": "
-      << r.timings.verification_ms << ", \"registration\": " << r.timings.total_ms << "}}";
-    return s.str ();
+    pcl::io::JsonReport j = pcl::io::toJson (r);
+    j["timings_ms"]["load"] = load_ms;
+    return pcl::io::dumpJson (j);
   }
 
   void

@@ -107,17 +107,7 @@ namespace pcl_tensor_tools
       return false;
     if (v.size () != 3)
       PCL_TENSOR_THROW (pcl::BadArgumentException, "--viewpoint takes x,y,z");
-    Eigen::Vector3d centroid = Eigen::Vector3d::Zero ();
-    std::size_t n = 0;
-    for (const auto& p : cloud)
-      if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
-      {
-        centroid += p.getVector3fMap ().cast<double> ();
-        ++n;
-      }
-    if (n == 0)
-      PCL_TENSOR_THROW (pcl::InvalidScanException, "the scan has no finite point to look at");
-    viewpoint = pcl::ScanViewpoint::lookingAt (Eigen::Vector3d (v[0], v[1], v[2]), centroid / static_cast<double> (n));
+    viewpoint = pcl::ScanViewpoint::lookingAtScan (Eigen::Vector3d (v[0], v[1], v[2]), cloud);
     return true;
   }
 }

@@ -53,8 +53,8 @@ namespace
     /** Pairs per object and experiment, spread evenly over the list (real pairs: sorted by overlap);
       * 0: every pair. --quick sets kQuickPairs. */
     int max_pairs = 0;
-    /** Hypotheses at most in the scene-order run of the efficiency experiment (each refuted one costs
-      * ~0.1 s here, so the cap is the best-first run's). */
+    /** Hypotheses at most in the scene-order run of the efficiency experiment (refuted hypotheses
+      * dominate its time, so the cap is the best-first run's; doc/design.md#hypothesis-cap-and-repeats). */
     int scene_order_hypotheses = 300;
   };
 

@@ -21,7 +21,8 @@ namespace pcl
     /** Call \a visit (a, b, count) for every undirected edge {a, b} (a < b) of the mesh once, in
       * ascending (a, b) order, with the number of polygon sides on it (2 for an interior edge of a
       * manifold, 1 on the border). The edges are bucketed by their lower vertex and each bucket (a
-      * vertex's valence) sorted on its own: a sort of every edge took 10-15 ms per bunny scan. */
+      * vertex's valence) sorted on its own, which is much cheaper than one sort of every edge
+      * (figures: doc/log.md). */
     template <typename Visit> void
     forEachEdge (const ScanMesh& mesh, Visit visit)
     {

@@ -2,6 +2,9 @@
  * pcl_tensor: automatic pairwise registration of range images with tensors.
  */
 #include <pcl/common/scan_viewpoint.h>
+#include <pcl/common/tensor_exceptions.h>
+
+#include <cmath>
 
 namespace pcl
 {
@@ -28,6 +31,22 @@ namespace pcl
     ScanViewpoint v;
     v.sensor_pose = Eigen::Translation3d (position) * r;
     return v;
+  }
+
+  ScanViewpoint
+  ScanViewpoint::lookingAtScan (const Eigen::Vector3d& position, const pcl::PointCloud<pcl::PointXYZ>& cloud)
+  {
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero ();
+    std::size_t n = 0;
+    for (const auto& p : cloud)
+      if (std::isfinite (p.x) && std::isfinite (p.y) && std::isfinite (p.z))
+      {
+        centroid += p.getVector3fMap ().cast<double> ();
+        ++n;
+      }
+    if (n == 0)
+      PCL_TENSOR_THROW (pcl::InvalidScanException, "the scan has no finite point to look at");
+    return lookingAt (position, centroid / static_cast<double> (n));
   }
 
   ScanViewpoint

@@ -168,11 +168,9 @@ namespace pcl
 
     namespace
     {
-      /** The free-space z-buffers' pixels per d_res. One per d_res saves ~5 ms on bun000-bun045 but
-        * refuses noisy views: at the same pose of synthetic bunny views 0 and 1 with noise of 3 d_res,
-        * 7.3% of the points lay in free space against 2.0% at two pixels per d_res, and of the 36
-        * synthetic bunny pairs 0 registered at that noise instead of 36 (at a noise of 2 d_res, 22
-        * instead of 35; eval_paper --noise). */
+      /** The free-space z-buffers' pixels per d_res. One per d_res is a little faster but refuses
+        * noisy views: a pixel then holds the depth of one noisy triangle rather than of a local mean
+        * (doc/design.md#free-space-check). */
       constexpr double kZBufferPixelsPerResolution = 2.0;
 
       /** Of the points of \a from (under \a t) that \a to's sensor saw with a trusted surface behind

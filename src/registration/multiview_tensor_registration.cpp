@@ -6,6 +6,7 @@
 #include <pcl/common/time.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <set>
 
@@ -30,6 +31,47 @@ namespace pcl
     MultiviewRegistrationResult::registeredCount () const
     {
       return static_cast<std::size_t> (std::count_if (views.begin (), views.end (), [] (const auto& v) { return v.registered; }));
+    }
+
+    namespace
+    {
+      bool
+      finiteAtLeast (double value, double low)
+      {
+        return std::isfinite (value) && value >= low;
+      }
+
+      void
+      checkGlobalStepParams (const MultiviewIcpParams& p)
+      {
+        if (p.max_iterations < 0 || p.sample_points < 1 || !(finiteAtLeast (p.max_distance, 0.0) && p.max_distance > 0.0))
+          PCL_TENSOR_THROW (BadArgumentException, "the global step needs non-negative iterations, a positive sample and "
+                            "a positive pairing distance, got " << p.max_iterations << ", " << p.sample_points << " and "
+                            << p.max_distance);
+        if (!(p.max_normal_angle > 0.0 && p.max_normal_angle <= 180.0) || !finiteAtLeast (p.min_rotation, 0.0) ||
+            !finiteAtLeast (p.min_translation, 0.0))
+          PCL_TENSOR_THROW (BadArgumentException, "the global step's normal angle must lie in (0, 180] degrees and its "
+                            "convergence tolerances be finite and non-negative");
+      }
+    }
+
+    void
+    checkParams (const MultiviewRegistrationParams& params)
+    {
+      checkParams (params.pairwise);
+      const auto& g = params.global_verification;
+      if (!finiteAtLeast (g.tolerance, 0.0) || g.checked_dimensions < 1 || g.checked_dimensions > 3)
+        PCL_TENSOR_THROW (BadArgumentException, "global verification needs a finite non-negative tolerance and 1 to 3 "
+                          "checked dimensions, got " << g.tolerance << " and " << g.checked_dimensions);
+      const Eigen::Vector3d& d = params.object_dimensions;
+      if (!d.allFinite () || (d.array () < 0.0).any () || (!d.isZero () && !(d.array () > 0.0).all ()))
+        PCL_TENSOR_THROW (BadArgumentException, "object dimensions must be three positive numbers, or all zero (from "
+                          "the views), got " << d.transpose ());
+      if (params.max_references < 0)
+        PCL_TENSOR_THROW (BadArgumentException, "max_references must be 0 (all) or positive, got " << params.max_references);
+      if (!(params.min_overlap >= 0.0 && params.min_overlap <= 1.0))
+        PCL_TENSOR_THROW (BadArgumentException, "min_overlap must lie in [0, 1], got " << params.min_overlap);
+      checkGlobalStepParams (params.global);
     }
 
     std::vector<pcl::IntegrationView>

@@ -18,8 +18,9 @@ namespace pcl
         words_[bin / 64] |= std::uint64_t{1} << (bin % 64);
     }
 
-// Without -mpopcnt, which a distributed build cannot assume, __builtin_popcountll is a libgcc call
-// (2% of a whole pair registration); GCC's clones pick the instruction at load time where the CPU has it.
+// Without -mpopcnt, which a distributed build cannot assume, __builtin_popcountll is a libgcc call,
+// slow enough to show in a whole pair registration (figures: doc/log.md); GCC's clones pick the
+// instruction at load time where the CPU has it.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
     __attribute__ ((target_clones ("popcnt", "default")))
 #endif

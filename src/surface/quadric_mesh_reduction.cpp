@@ -95,9 +95,9 @@ namespace pcl
     reduceWithMeshoptimizer (std::vector<unsigned int> indices, const pcl::PointCloud<pcl::PointNormal>& vertices,
                              std::size_t target_faces, ScanMesh& out)
     {
-      // One call can stop short of the target when its ranking of collapses runs dry (3 of the 10
-      // bunny scans: 443-676 faces); calling again on its own output reclassifies the vertices and
-      // goes on. The error bound is relative to the mesh extent; 1 means "stop only at the target".
+      // One call can stop short of the target when its ranking of collapses runs dry (it does on real
+      // scans; doc/design.md#garland-heckbert-reduction-by-meshoptimizer); calling again on its own
+      // output reclassifies the vertices and goes on. The error bound is relative to the mesh extent; 1 means "stop only at the target".
       const std::size_t target_indices = 3 * target_faces;
       for (int pass = 0; pass < 8 && indices.size () > target_indices; ++pass)
       {

@@ -120,8 +120,8 @@ namespace pcl
 
     /** The points in rows about one point spacing high, each row by x: the order of a scan's grid.
       * vtkDelaunay2D locates each new point by walking from the last triangle it made, so neighbours
-      * inserted one after the other keep the walks short: a shuffled bunny scan takes 0.6 s in this
-      * order instead of 4.5 s (bun000). */
+      * inserted one after the other keep the walks short, and a shuffled scan triangulates several
+      * times faster in this order (figures: doc/log.md). */
     std::vector<std::size_t>
     rowMajorOrder (const std::vector<Eigen::Vector2d>& uv)
     {
@@ -214,10 +214,10 @@ namespace pcl
       * longest edges of the triangles flagged in \a in_statistics (all when it is empty).
       * Section 2 states the rule over edge lengths; taken over every edge it would prune every
       * triangle of a regular grid, whose diagonals are all sqrt(2) times the mean. Over each
-      * triangle's longest edge it keeps a regular grid whole, and on the raw Stanford scans it
-      * prunes 2.6-5% of the triangles (the all-edges form: 3-9%): the bridges across depth jumps.
-      * The floor matters where the lengths barely vary (a tilted plane, a synthetic render): there
-      * the stddev is rounding noise and mean + k * stddev would cut 27% of a smooth surface. */
+      * triangle's longest edge it keeps a regular grid whole, and on real scans it prunes the
+      * bridges across depth jumps. The floor matters where the lengths barely vary (a tilted plane, a
+      * synthetic render): there the stddev is rounding noise and mean + k * stddev would cut into a
+      * smooth surface. See doc/design.md#edge-pruning. */
     std::vector<Triangle>
     pruneLongEdges (const ScanMesh& mesh, const std::vector<Triangle>& triangles, const std::vector<bool>& in_statistics,
                     double k, double floor_medians)

@@ -38,3 +38,15 @@ foreach(option "--voxel;-1" "--dims;1;2" "--dims-tolerance;-1" "--faces;3")
   pcl_tensor_case(app_model_param${tag} 2 COMMAND ${MODEL} ${VIEW0} ${VIEW1} -o ${MODEL_OUT}/param.ply ${option})
 endforeach()
 pcl_tensor_case(app_model_help 0 COMMAND ${MODEL} --help)
+
+# The --json report with file names that need escaping (a quote, a backslash, non-ASCII characters).
+find_package(Python3 COMPONENTS Interpreter)
+if(Python3_Interpreter_FOUND)
+  add_test(NAME app_model_json_names
+    COMMAND ${CMAKE_COMMAND} -DMODEL=${MODEL} -DPYTHON=${Python3_EXECUTABLE} -DOUT_DIR=${MODEL_OUT}/json_names
+      "-DVIEWS=${REG_VIEWS}/view_00.ply;${REG_VIEWS}/view_01.ply;${REG_VIEWS}/view_02.ply"
+      -P ${CMAKE_CURRENT_SOURCE_DIR}/json_names.cmake)
+  set_tests_properties(app_model_json_names PROPERTIES FIXTURES_REQUIRED register_views TIMEOUT 600)
+else()
+  message(STATUS "SKIPPED app_model_json_names: no python3 to check the JSON with")
+endif()

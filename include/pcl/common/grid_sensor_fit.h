@@ -28,9 +28,9 @@ namespace pcl
     *
     * A pushbroom sweeps a fan of lines of sight along a line: the grid lines of one kind (the fan
     * lines) lie in planes through one common axis along the sweep, and each line of the other kind
-    * keeps one position along the sweep. The raw Stanford scans (Cyberware) are such: in bun000 the
-    * rows lie in planes through one line at y = 0.18 m, z = 1.35 m, to 1.3e-5 m RMS, and the columns
-    * in planes x = const, their odd rows half a column (0.25 mm) over.
+    * keeps one position along the sweep. The raw Stanford scans (Cyberware) are such: their rows lie
+    * in planes through one line, and their columns in planes x = const, the odd rows half a column
+    * over (doc/design.md#pushbroom-sensor-fit).
     * Both ways of assigning rows and columns are tried; the one whose fan fits better is kept.
     *
     * The fitted sensor's lines of sight are the scanner's own, which a perspective or an orthographic

@@ -66,10 +66,9 @@ namespace pcl
     * and the principal frame of each view alone, the frames in which Eq. 1 measured D.
     *
     * Two views' combined principal axes turn with what they cover, so correct views can exceed D in
-    * them though they fit inside the object: the synthetic bun_zipper views 19 and 20 at their exact
-    * poses stick out of D's second extent by 15.9 d_res there, while all 26 views together lie 11 mm
-    * inside it. The views' own frames are fixed by the views, not chosen to fit: a search over all
-    * frames for the best fit let wrong poses through (doc/design.md).
+    * them though they fit inside the object. The views' own frames are fixed by the views, not chosen
+    * to fit: a search over all frames for the best fit let wrong poses through
+    * (doc/design.md#dimension-checks-on-two-extents).
     * \param[in] points the registered views' points, view after view, in one frame
     * \param[in] view_starts the index in \a points of each view's first point, ascending
     * \param[in] dims the object's D

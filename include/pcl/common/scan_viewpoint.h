@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
 #include <Eigen/Geometry>
 
 namespace pcl
@@ -54,6 +55,13 @@ namespace pcl
     /** \brief A perspective sensor at \a position looking at \a target. */
     static ScanViewpoint
     lookingAt (const Eigen::Vector3d& position, const Eigen::Vector3d& target);
+
+    /** \brief A perspective sensor at \a position looking at the centroid of the finite points of
+      * \a cloud: what a user means by "the scan was taken from there" (the apps' --viewpoint x,y,z).
+      * \throw pcl::InvalidScanException when \a cloud has no finite point
+      */
+    static ScanViewpoint
+    lookingAtScan (const Eigen::Vector3d& position, const pcl::PointCloud<pcl::PointXYZ>& cloud);
 
     /** \brief A pushbroom sensor whose lines of sight fan out from the line through \a axis_point along
       * \a axis_direction, looking toward \a target (which must lie off that line).

@@ -34,7 +34,8 @@ namespace pcl
       double getRadiusResolutions () const { return radius_resolutions_; }
 
       /** \brief Fill in the normals of \a mesh from its own faces (Method::FACE_AVERAGE). Vertices on
-        * no face (edge pruning can isolate them) get a NaN normal: there is no surface to take it from.
+        * no face (edge pruning can isolate them) get a NaN normal: there is no surface to take it from
+        * (doc/design.md#nan-normals-on-isolated-vertices).
         */
       void computeFaceAverage (ScanMesh& mesh) const;
 

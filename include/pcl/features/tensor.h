@@ -59,16 +59,15 @@ namespace pcl
     *
     * Bins: the exact area of the mesh inside each of the N^3 bins of the grid (see TensorSurfaceGrid).
     * By default every face whose bounding sphere and local bounding box meet the grid is clipped
-    * (brute force: exact, and on ~400-face reduced meshes the fastest way). setRegionGrowing(true)
-    * visits faces by the paper's region growing from the vertex closest to the origin instead. The
-    * paper's rule (one seed; stop when the whole frontier is outside the grid) misses surface that
-    * re-enters the grid, which on the ten reduced Stanford bunny scans happens in 40% of the tensors
-    * (4.8% of their area on average), not "very slim[ly]"; so region growing is by default also seeded
-    * in every connected component that can reach the grid and grows through a guard band of twice the
-    * grid's half-extent (setSeedEveryComponent, setGrowthMargin): it then agrees with brute force on
-    * 99.98% of those tensors, but visits more faces and is slower than brute force at 400 faces (it
+    * (brute force: exact, and on reduced meshes of a few hundred to a thousand faces the fastest way).
+    * setRegionGrowing(true) visits faces by the paper's region growing from the vertex closest to the
+    * origin instead. The paper's rule (one seed; stop when the whole frontier is outside the grid)
+    * misses surface that re-enters the grid, which on real scans is common, not "very slim[ly]"; so
+    * region growing is by default also seeded in every connected component that can reach the grid
+    * and grows through a guard band of twice the grid's half-extent (setSeedEveryComponent,
+    * setGrowthMargin): it then agrees with brute force almost always, but visits more faces (it
     * scales better on large meshes). setSeedEveryComponent(false) and setGrowthMargin(0) give the
-    * paper's rule exactly.
+    * paper's rule exactly. See doc/design.md#face-visiting-by-brute-force.
     *
     * Errors: compute() follows PCL: on invalid input it prints PCL_ERROR, returns an empty cloud and
     * records the reason (getLastError()). computeOrThrow() throws instead: pcl::BadArgumentException for
@@ -137,6 +136,7 @@ namespace pcl
       /** \brief Set the maximum mutual normal angle: "the average of the two normals must be defined"
         * (Section 2). |n_a + n_b| = 2 cos(theta_d/2), so 175 degrees (the default) conditions z as the
         * 5 degree minimum conditions x.
+        * \note The paper gives no value; see doc/design.md#canonical-pair-order.
         * \param[in] degrees in (0, 180)
         * \throw pcl::BadArgumentException otherwise */
       void setMaxNormalAngle (double degrees);
@@ -176,6 +176,7 @@ namespace pcl
       /** \brief Set the angle below which the segment's elevation from the xy plane of the frame makes
         * the pair order ambiguous (order_ambiguous = 1). Not a paper parameter; default 5 degrees, the
         * size of the normal noise the paper allows for (Delta theta_d, Section 2).
+        * \note Beyond the paper, which does not define the pair order; see doc/design.md#canonical-pair-order.
         * \param[in] degrees in [0, 90)
         * \throw pcl::BadArgumentException otherwise */
       void setOrderAmbiguityAngle (double degrees);
@@ -183,8 +184,9 @@ namespace pcl
       double getOrderAmbiguityAngle () const { return order_ambiguity_angle_; }
 
       /** \brief Visit the faces by region growing (true: the paper's method, Section 2) or test every
-        * face whose bounding sphere meets the grid (false, default: exact, never misses surface that
-        * re-enters the grid, and faster than region growing on ~400-face meshes; see the class notes). */
+        * face whose bounding sphere meets the grid (false, default; see the class notes).
+        * \note The default departs from the paper: brute force is exact, never misses surface that
+        * re-enters the grid, and is faster on reduced meshes; see doc/design.md#face-visiting-by-brute-force. */
       void setRegionGrowing (bool region_growing) { region_growing_ = region_growing; }
       /** \brief Whether region growing is used. */
       bool getRegionGrowing () const { return region_growing_; }
@@ -192,14 +194,16 @@ namespace pcl
       /** \brief Region growing: also seed the closest vertex of every connected component of the mesh
         * that can reach the grid (true, default), or only the vertex closest to the origin (false: the
         * paper's single seed, Section 2). Scans split into components at depth discontinuities.
-        * See TensorSurfaceGrid::setSeedEveryComponent. */
+        * See TensorSurfaceGrid::setSeedEveryComponent.
+        * \note The default departs from the paper's single seed; see doc/design.md#face-visiting-by-brute-force. */
       void setSeedEveryComponent (bool every) { seed_every_component_ = every; }
       /** \brief Whether every component that can reach the grid is seeded. */
       bool getSeedEveryComponent () const { return seed_every_component_; }
 
       /** \brief Region growing: continue through faces outside the grid within a guard band of
-        * \a fraction times the grid's half-extent (default 2; 0: the paper's rule, which on the reduced
-        * Stanford bunny scans misses surface in 40% of the tensors). See TensorSurfaceGrid::setGrowthMargin.
+        * \a fraction times the grid's half-extent (default 2; 0: the paper's rule, which misses surface
+        * that re-enters the grid). See TensorSurfaceGrid::setGrowthMargin.
+        * \note The default departs from the paper; see doc/design.md#face-visiting-by-brute-force.
         * \throw pcl::BadArgumentException when negative */
       void setGrowthMargin (double fraction)
       {

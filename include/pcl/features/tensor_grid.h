@@ -73,7 +73,8 @@ namespace pcl
       /** \brief Bin size b_s. */
       double getBinSize () const { return bin_size_; }
 
-      /** \brief Visit faces by region growing (true, the paper's method) or by brute force (false, default). */
+      /** \brief Visit faces by region growing (true, the paper's method) or by brute force (false, default).
+        * \note The default departs from the paper; see doc/design.md#face-visiting-by-brute-force. */
       void setRegionGrowing (bool region_growing) { region_growing_ = region_growing; }
       /** \brief Whether faces are visited by region growing. */
       bool getRegionGrowing () const { return region_growing_; }
@@ -83,6 +84,7 @@ namespace pcl
         * paper's single seed). A range scan falls apart into components at depth discontinuities
         * (an ear in front of the head), and a grid often spans several of them; surface that leaves the
         * grid and re-enters it within one component is still missed.
+        * \note The default departs from the paper; see doc/design.md#face-visiting-by-brute-force.
         */
       void setSeedEveryComponent (bool every) { seed_every_component_ = every; }
       /** \brief Whether every component that can reach the grid is seeded. */
@@ -91,9 +93,9 @@ namespace pcl
       /** \brief Let region growing continue through faces outside the grid but within a guard band of
         * \a fraction times the grid's half-extent around it (default 2; 0: the paper's rule, stop as
         * soon as the whole frontier is outside the grid). Catches surface that leaves the grid and
-        * re-enters it: on the ten reduced Stanford bunny scans, region growing with every component
-        * seeded agrees with brute force on 79.5% of the tensors with no guard band, 99.4% with 1 and
-        * 99.98% with 2 (test_tensor, RegionGrowingAgreesWithBruteForceOnBunnyScans).
+        * re-enters it: the wider the band, the closer region growing comes to brute force (test_tensor,
+        * RegionGrowingAgreesWithBruteForceOnBunnyScans).
+        * \note The default departs from the paper; see doc/design.md#face-visiting-by-brute-force.
         * \throw pcl::BadArgumentException when negative */
       void setGrowthMargin (double fraction);
       /** \brief The guard band, as a fraction of the grid's half-extent. */

@@ -22,10 +22,11 @@ namespace pcl
       * viewportx x viewporty equals the vertex count (organized clouds written by pcl::PLYWriter).
       * Otherwise the cloud is unorganized. is_dense is false when any point is not finite.
       *
-      * Why not pcl::PLYReader: it parses ASCII through a callback per value (4x slower on a Stanford
-      * scan), and PCL 1.13's reader asserts, aborting the process, on headers that are merely odd (an
-      * obj_info line with leading blanks, a list property in the vertex element, more vertices than
-      * grid cells), all found by fuzz_range_scan. This reader throws instead.
+      * Why not pcl::PLYReader: it parses ASCII through a callback per value (several times slower on a
+      * Stanford scan; doc/design.md#own-ply-and-pcd-readers), and PCL 1.13's reader asserts, aborting the
+      * process, on headers that are merely odd (an obj_info line with leading blanks, a list property
+      * in the vertex element, more vertices than grid cells), all found by fuzz_range_scan. This reader
+      * throws instead.
       *
       * \param[in] path the file
       * \param[out] cloud the points; untouched when an exception is thrown

@@ -66,7 +66,9 @@ namespace pcl
         void setUseThetaIndex (bool use) { use_theta_index_ = use; }
         bool getUseThetaIndex () const { return use_theta_index_; }
 
-        /** \brief Set the order of the output (default TensorMatchOrder::BEST_FIRST). */
+        /** \brief Set the order of the output (default TensorMatchOrder::BEST_FIRST).
+          * \note The default departs from Fig. 7's SCENE_ORDER: the likeliest hypotheses are verified
+          * first; see doc/design.md#best-first-order. */
         void setOrder (TensorMatchOrder order) { order_ = order; }
         TensorMatchOrder getOrder () const { return order_; }
 

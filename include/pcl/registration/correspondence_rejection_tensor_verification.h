@@ -21,11 +21,14 @@ namespace pcl
       *
       * Each correspondence (scene tensor -> model tensor) gives one rigid hypothesis (Eq. 7-8). It
       * survives only if, in turn: the registered reduced meshes exceed the object's dimensions D by
-      * at most t_D (Eq. 9); at least n_c = min(|M_m|, |M_s|)/4 scene points lie within 2 d_res of the
-      * model (TensorVerificationParams::count_both_views: n_c/2 of each view); after point-to-plane
-      * ICP, at least 2 n_c lie within d_res (n_c of each view); and the registered fine
-      * meshes exceed D by at most 2 d_res. verify() runs the test on one hypothesis and reports
-      * where it failed; getRemainingCorrespondences() keeps the correspondences that pass.
+      * at most t_D (Eq. 9); at least n_c = min(|M_m|, |M_s|)/4 scene points lie within
+      * TensorVerificationParams::coarse_distance of the model (default 6 d_res, the paper's 2:
+      * doc/design.md#coarse-correspondence-distance; with count_both_views, n_c/2 of each view); after
+      * point-to-plane ICP, at least 2 n_c lie within d_res (n_c of each view); the registered fine
+      * meshes exceed D by at most 2 d_res; and, beyond the paper, neither view puts surface where the
+      * other's sensor saw through (doc/design.md#free-space-check). verify() runs the test on one
+      * hypothesis and reports where it failed; getRemainingCorrespondences() keeps the correspondences
+      * that pass.
       *
       * The point hooks of CorrespondenceRejector (requiresSourcePoints() ...) are not used: the test
       * needs the meshes and tensors of both views, which setModel()/setScene() provide.

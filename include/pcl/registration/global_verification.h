@@ -21,7 +21,8 @@ namespace pcl
       /** How far the combined dimensions of all registered views may exceed D, in d_res (Section 4.2: 4). */
       double tolerance = 4.0;
       /** How many of the largest principal extents are compared with D: 2, as in local verification
-        * (TensorVerificationParams::checked_dimensions), since Eq. 1 underestimates the thinnest. */
+        * (TensorVerificationParams::checked_dimensions), since Eq. 1 underestimates the thinnest.
+        * \note The paper compares all 3; see doc/design.md#dimension-checks-on-two-extents. */
       int checked_dimensions = 2;
     };
 

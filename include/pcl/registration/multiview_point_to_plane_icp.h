@@ -21,7 +21,9 @@ namespace pcl
     /** \brief Pairs of views (i, j) that overlap. */
     using ViewPairs = std::vector<std::pair<int, int>>;
 
-    /** \brief Settings of multiviewPointToPlaneIcp(); distances in units of d_res. */
+    /** \brief Settings of multiviewPointToPlaneIcp(); distances in units of d_res.
+      * \note The paper's global registration is Williams and Bennamoun's, without these settings; the
+      * defaults are ours (doc/design.md#multiview-point-to-plane-icp). */
     struct MultiviewIcpParams
     {
       /** Iterations at most (each re-pairs every overlapping pair, then moves all views at once). */

@@ -71,6 +71,14 @@ namespace pcl
       double min_overlap = 0.3;
     };
 
+    /** \brief Check every parameter of \a params before any view is read: the pairwise ones
+      * (checkParams(const TensorRegistrationParams&)), global verification, the global step and the
+      * multiview settings, so that a bad value is refused before the pairwise work, not after it.
+      * \throw pcl::BadArgumentException naming the first value out of range
+      */
+    void
+    checkParams (const MultiviewRegistrationParams& params);
+
     /** \brief What happened to one view. */
     struct ViewRegistrationStatus
     {
@@ -138,7 +146,13 @@ namespace pcl
         using Ptr = shared_ptr<MultiviewTensorRegistration>;
         using ConstPtr = shared_ptr<const MultiviewTensorRegistration>;
 
-        void setParams (const MultiviewRegistrationParams& params) { params_ = params; }
+        /** \brief Set every parameter at once.
+          * \throw pcl::BadArgumentException when one is out of range (see checkParams()) */
+        void setParams (const MultiviewRegistrationParams& params)
+        {
+          checkParams (params);
+          params_ = params;
+        }
         const MultiviewRegistrationParams& getParams () const { return params_; }
 
         /** \brief The overlapping pairs (indices into the views), when known (e.g. a pairs file);

@@ -20,14 +20,15 @@ namespace pcl
       double max_distance = 0.0;        ///< pairs farther apart are not used (required, > 0)
       /** Coarse to fine: when positive and below max_distance, ICP runs again from its last pose with
         * the distance halved, down to this one (8, 4, 2 from 8 to 2), each stage with max_iterations. A
-        * wide first stage reaches poses a single tensor match leaves 5-10 degrees off; a tight last one
+        * wide first stage reaches poses a single tensor match leaves several degrees off; a tight last one
         * keeps the views' parts that do not overlap from pulling the pose. 0: one stage. */
       double final_distance = 0.0;
       double min_rotation = 1e-5;       ///< stop when an update turns less than this (radians) ...
       double min_translation = 0.0;     ///< ... and moves less than this
       /** Stages before the last only have to bring the pose within reach of the next one, so they
         * stop at this many times min_rotation and min_translation (1: every stage converges as fully
-        * as the last). 100 halves verification's ICP time on bun000-bun045 at the same final pose. */
+        * as the last). The default 100 leaves the final pose as it was, since the last stage still
+        * converges fully (doc/design.md#own-point-to-plane-icp). */
       double coarse_stage_tolerance = 100.0;
       /** A stage before the last that ends with fewer pairs than this ends the refinement (0: never).
         * A later stage pairs within a smaller distance from about the same pose, so it cannot find the

@@ -12,7 +12,9 @@ namespace pcl
   namespace registration
   {
     /** \brief Thresholds of the local verification of Section 4.1 (Fig. 7, steps 4-14), with the
-      * paper's values as defaults. Distances are in units of d_res, the fine meshes' resolution.
+      * paper's values as defaults where it gives one; each field that departs from it says so in a
+      * \\note (doc/design.md#departures-from-the-paper). Distances are in units of d_res, the fine
+      * meshes' resolution.
       * \ingroup registration
       */
     struct TensorVerificationParams
@@ -21,9 +23,10 @@ namespace pcl
       double coarse_dimension_fraction = 0.1;
       /** n_c = min(|M_m|, |M_s|) * this: correspondences needed before ICP; twice as many after (1/4). */
       double correspondence_fraction = 0.25;
-      /** A correspondence before ICP: points within this many d_res. The paper uses 2; a single
-        * tensor's frame is 5-10 degrees off on the real bunny scans, which moves points 50 mm from
-        * the tensor's origin by 5-11 d_res, so 2 rejected most true hypotheses there. Default 6. */
+      /** A correspondence before ICP: points within this many d_res (default 6).
+        * \note The paper uses 2; a single tensor's frame is several degrees off on real scans, which
+        * moves points far from the tensor by several d_res, so 2 rejects most true hypotheses there;
+        * see doc/design.md#coarse-correspondence-distance. */
       double coarse_distance = 6.0;
       /** Count the correspondences of both views (default true; false: the scene's points only). The
         * paper turns "pairs of points on M_m and M_s" within the distance into correspondences and needs
@@ -32,47 +35,47 @@ namespace pcl
         * although Fig. 18 has correct pairs below it. Counting both, a hypothesis is credited with twice
         * the smaller of the two views' counts: after ICP each view needs n_c points within d_res of the
         * other. (Crediting the sum instead let a pose 140 degrees off pass on a synthetic turntable.)
-        * On the 150 real pairs of the bunny and the dragon: 41/55 correct at overlap >= 0.5 (scene
-        * only: 37/55), 4/15 at 0.3-0.5 (0/15), no wrong pose, none of 50 registered under 0.1 overlap;
-        * the synthetic pairs are unchanged (doc/design.md). */
+        * \note Departs from a scene-only reading of the paper, which would refuse every pair under 0.5
+        * overlap; see doc/design.md#both-views-counted. */
       bool count_both_views = true;
       /** A correspondence after ICP: points within this many d_res (1). */
       double fine_distance = 1.0;
       /** How far the refined registration's combined dimensions may exceed D, in d_res (2). */
       double fine_dimension_tolerance = 2.0;
       /** How many of the largest principal extents the dimension checks compare with D (2 of 3).
-        * Every range image is thin along its line of sight, so Eq. 1's maximum over views of the
-        * third extent underestimates the object (bunny: 0.116 m against 0.159 m), and 17 of the 45
-        * ground-truth-aligned bunny pairs exceed it by up to 57 d_res. The two largest extents stay
-        * within 2.6 d_res of D for every aligned pair. */
+        * \note The paper compares all 3; every range image is thin along its line of sight, so Eq. 1's
+        * maximum over views of the third extent underestimates the object and correctly aligned pairs
+        * exceed it; see doc/design.md#dimension-checks-on-two-extents. */
       int checked_dimensions = 2;
       /** ICP (point-to-plane, Rusinkiewicz and Levoy's variant): iterations at most. */
       int icp_iterations = 20;
       /** ICP: pairs farther apart than this many d_res are not used, in the first stage ... */
       double icp_max_distance = 8.0;
       /** ... halved stage by stage down to this many (8, 4, 2; PointToPlaneIcpParams::final_distance).
-        * On the 45 bunny pairs, one stage at 4 d_res registered 17/18 pairs at overlap >= 0.5 and 3/5
-        * at 0.3-0.5, one at 8 d_res 16/18 and 1/5; 8, 4, 2 registers 17/18 and 5/5, with fewer
-        * hypotheses, none wrong. */
+        * \note Beyond the paper, which names ICP without stages: one narrow stage does not reach a
+        * hypothesis from a single tensor match, and one wide stage ends biased by the parts of the
+        * views that do not overlap; see doc/design.md#own-point-to-plane-icp. */
       double icp_final_distance = 2.0;
       /** ICP: a stage k stages before the last pairs every (icp_coarse_stage_step^k)-th sampled point
         * (PointToPlaneIcpParams::coarse_stage_step; 2: the stages at 8, 4 and 2 d_res pair a quarter,
-        * a half and all of them). 1: every stage pairs them all. */
+        * a half and all of them). 1: every stage pairs them all.
+        * \note Beyond the paper: a coarse stage only has to bring the pose within reach of the next, so
+        * it need not pair every point; see doc/design.md#own-point-to-plane-icp. */
       int icp_coarse_stage_step = 2;
-      /** Scene points sampled (evenly, deterministically) for ICP and the count before ICP. */
+      /** Scene points sampled (evenly, deterministically) for ICP and the count before ICP.
+        * \note Beyond the paper, which uses every point: the sample keeps each refuted hypothesis cheap,
+        * and the final count is still over every point; see doc/design.md#own-point-to-plane-icp. */
       int sample_points = 1000;
       /** Free space (beyond the paper): after ICP, a point of either view may lie in front of the
         * other view's surface, in space that view's sensor saw empty, by at most this many d_res
         * (or 3 times the two scans' combined noise, PreparedScan::noise, when the scans are noisier).
-        * Not ICP's RMS, which a wrong pose inflates itself: on the built-in object's 300 x 300 views
-        * a pose 147 degrees off fitted with an RMS of 1.3 d_res, and at 3 times that, 4.98% of its
-        * points lay in free space, just under the fraction below; at 2 d_res it is refused ... */
+        * Not ICP's RMS, which a wrong pose inflates itself, so that a bad fit would widen its own
+        * tolerance ... */
       double free_space_distance = 2.0;
-      /** ... and only this fraction of the points that the other view saw may do so. Measured at
-        * 2 d_res: none on synthetic views, 0-3% on correct registrations of most real bunny pairs, but
-        * 8.3% on bun090-top3 (the +z sensor assumed for PLY scans is only approximate), which is
-        * therefore refused; 12-15% for a view of another, similar object that passes every check of
-        * the paper, which 0.1 let through. A refusal over a wrong answer. 1 disables. */
+      /** ... and only this fraction of the points that the other view saw may do so. Correct
+        * registrations stay well under it, while a view of another, similar object that passes every
+        * check of the paper exceeds it: a refusal over a wrong answer. 1 disables.
+        * \note Beyond the paper, as is free_space_distance; see doc/design.md#free-space-check. */
       double free_space_fraction = 0.05;
     };
 
@@ -81,9 +84,9 @@ namespace pcl
     {
       PASSED,
       COARSE_DIMENSIONS,  ///< max(D'_ms - D) > t_D (Eq. 9 on the reduced meshes)
-      COARSE_OVERLAP,     ///< fewer than n_c correspondences within 2 d_res
+      COARSE_OVERLAP,     ///< fewer than n_c correspondences within coarse_distance (default 6 d_res; the paper's 2)
       FINE_OVERLAP,       ///< after ICP, fewer than 2 n_c correspondences within d_res
-      FINE_DIMENSIONS,    ///< after ICP, max(D_ms - D) > 2 d_res
+      FINE_DIMENSIONS,    ///< after ICP, max(D_ms - D) > fine_dimension_tolerance (default 2 d_res, the paper's)
       FREE_SPACE          ///< after ICP, too many points of one view where the other's sensor saw nothing
     };
 
@@ -102,10 +105,10 @@ namespace pcl
       Eigen::Matrix4f transform = Eigen::Matrix4f::Identity ();
       /** max(D'_ms - D), the excess of the coarsely registered reduced meshes (Eq. 9). */
       double coarse_dimension_excess = 0.0;
-      /** Correspondences within 2 d_res before ICP, estimated from the sample, and n_c. */
+      /** Correspondences within coarse_distance (default 6 d_res) before ICP, estimated from the sample, and n_c. */
       double coarse_correspondences = 0.0;
       double required_correspondences = 0.0;
-      /** Correspondences within d_res after ICP, over every scene point. */
+      /** Correspondences within d_res after ICP, over every point (of both views with count_both_views). */
       double fine_correspondences = 0.0;
       /** max(D_ms - D) after ICP, in d_res. */
       double fine_dimension_excess = 0.0;

@@ -12,11 +12,12 @@ namespace pcl
     * Uses meshoptimizer's meshopt_simplify, a maintained implementation of the quadric error metric:
     * plane quadrics of the faces, plus constraint quadrics along boundary edges so that the scan's
     * outline is preserved. Each edge collapses onto one of its end points (Garland and Heckbert's
-    * "subset placement"), so every vertex of M'_i is a vertex of M_i. On a 80,000-face bunny scan
-    * it takes 18 ms where VTK's vtkQuadricDecimation (pcl::MeshQuadricDecimationVTK) takes 271 ms
-    * and moves vertices more than 2 d_res off the scan.
+    * "subset placement"), so every vertex of M'_i is a vertex of M_i. VTK's vtkQuadricDecimation
+    * (pcl::MeshQuadricDecimationVTK) is much slower and moves vertices off the scan; see
+    * doc/design.md#garland-heckbert-reduction-by-meshoptimizer.
     *
-    * The paper reduces every view to about 400 faces (Section 7.2).
+    * The paper reduces every view to about 400 faces (Section 7.2), the default here; registration
+    * reduces to more (doc/design.md#more-faces-for-registration).
     * \ingroup surface
     */
   class QuadricMeshReduction
@@ -29,6 +30,8 @@ namespace pcl
       /** \brief Drop connected components with fewer than this fraction of the faces before reducing
         * (default 0.01). Edge pruning cuts small fragments off a scan; each would keep faces of the
         * budget while adding nothing that tensors can describe. 0 keeps every component.
+        * \note Beyond the paper, which reduces the whole mesh; see
+        * doc/design.md#garland-heckbert-reduction-by-meshoptimizer.
         */
       void setMinComponentFraction (double fraction);
       double getMinComponentFraction () const { return min_component_fraction_; }

@@ -19,13 +19,13 @@ namespace pcl
     * rule would remove every triangle of a regular grid, whose diagonals are sqrt(2) times longer.
     * A triangle whose longest edge is under a floor of 2 median lengths is always kept: where the
     * lengths barely vary (a tilted plane, a synthetic render) the standard deviation is rounding
-    * noise, and mean + 0.6 stddev alone would cut a quarter of a smooth surface away.
+    * noise, and mean + 0.6 stddev alone would cut into a smooth surface (doc/design.md#edge-pruning).
     * Delaunay triangulates the convex hull of the projected points, so it also spans the scan's gaps
     * (shadows, holes, the hollows of the silhouette) with triangles that a grid never forms. They
-    * would inflate the statistics (bun000 shuffled: 1.097 of the grid's area), so they are left out
+    * would inflate the statistics and let the shorter fills survive, so they are left out
     * of them, though they still face the threshold. A range sensor samples its retinal plane evenly,
     * which is how they are recognised: their longest retinal edge exceeds 1.5 median lengths
-    * (setGapRetinalMedians).
+    * (setGapRetinalMedians; doc/design.md#delaunay-gap-triangles).
     * Vertices that no longer belong to any triangle are kept, so that the mesh has one vertex per
     * finite input point.
     * The faces are consistently oriented, most of the area facing the sensor; a triangle folded over
@@ -35,18 +35,23 @@ namespace pcl
   class RangeScanTriangulation
   {
     public:
-      /** \brief Set k in the pruning threshold mean + k * stddev of the triangles' longest edges (default 0.6). */
+      /** \brief Set k in the pruning threshold mean + k * stddev of the triangles' longest edges (default 0.6).
+        * \note k is the paper's, but the statistic is over each triangle's longest edge, not over all edges,
+        * which would prune every triangle of a regular grid; see doc/design.md#edge-pruning. */
       void setEdgeStdDevs (double k);
       double getEdgeStdDevs () const { return edge_std_devs_; }
 
-      /** \brief Never prune a triangle whose longest edge is under this many median lengths (default 2). */
+      /** \brief Never prune a triangle whose longest edge is under this many median lengths (default 2).
+        * \note Beyond the paper: where edge lengths barely vary the stddev is rounding noise, and the rule
+        * alone would cut smooth surface; see doc/design.md#edge-pruning. */
       void setEdgeFloorMedians (double floor);
       double getEdgeFloorMedians () const { return edge_floor_medians_; }
 
       /** \brief A Delaunay triangle whose longest edge on the retinal plane exceeds this many median
         * lengths spans a gap in the scan, and is left out of the pruning statistics (default 1.5;
         * infinity takes every triangle into them, as Section 2 states the rule). Grids have no such
-        * triangles. \throw BadArgumentException when under 1 */
+        * triangles. \note Beyond the paper: Delaunay's fills across gaps would inflate the statistics;
+        * see doc/design.md#delaunay-gap-triangles. \throw BadArgumentException when under 1 */
       void setGapRetinalMedians (double k);
       double getGapRetinalMedians () const { return gap_retinal_medians_; }
 

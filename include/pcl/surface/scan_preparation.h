@@ -10,12 +10,15 @@
 
 namespace pcl
 {
-  /** \brief Parameters of the range image -> M_i -> M'_i pipeline of Section 2, with the paper's defaults. */
+  /** \brief Parameters of the range image -> M_i -> M'_i pipeline of Section 2, with the paper's defaults
+    * (the stray-fragment fields are beyond the paper); registration's own are registrationPreparation(). */
   struct ScanPreparationParams
   {
     /** Prune triangles with an edge longer than mean + k * stddev (Section 2: k = 0.6). */
     double edge_std_devs = 0.6;
-    /** Faces of the reduced mesh M'_i (Sections 3 and 7.2: about 400). */
+    /** Faces of the reduced mesh M'_i (Sections 3 and 7.2: about 400).
+      * \note Registration departs from this: registrationPreparation() reduces to 1000 faces, since at 400
+      * too few reduced vertices recur between real views; see doc/design.md#more-faces-for-registration. */
     int target_faces = 400;
     /** How the normals of M'_i are computed (Section 2, approach (b) by default). */
     ScanMeshNormalEstimation::Method normal_method = ScanMeshNormalEstimation::Method::FINE_NEIGHBOURHOOD;
@@ -25,12 +28,15 @@ namespace pcl
     double stray_fragment_gap = 20.0;
     /** ... and holding less than this fraction of its points are removed as stray returns
       * (removeStrayFragments(); 0 keeps every point). Eq. 1 and Eq. 9 take extents, which one stray
-      * speck can set on its own. */
+      * speck can set on its own.
+      * \note Beyond the paper, which removes nothing; see doc/design.md#stray-fragment-removal. */
     double stray_fragment_fraction = 0.01;
     /** Beyond the paper: Garland-Heckbert reduces the mesh of every this-many-th row and column of
       * an organized range image instead of M_i itself, when that mesh still has at least 4 points
-      * per target face (1: M_i). The reduction's cost grows with its input; M'_i keeps about one
-      * vertex in 80 of M_i at 1000 faces, so the skipped points would be collapsed anyway. */
+      * per target face (1: M_i). The reduction's cost grows with its input, and M'_i keeps only a
+      * small fraction of M_i's vertices, so the skipped points would be collapsed anyway.
+      * \note The default 1 is the paper's; registrationPreparation() uses 2, which leaves every real
+      * pair's outcome unchanged; see doc/design.md#reduction-from-every-second-row-and-column. */
     int reduction_grid_step = 1;
   };
 

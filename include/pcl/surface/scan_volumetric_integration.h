@@ -28,6 +28,7 @@ namespace pcl
   };
 
   /** \brief Parameters of the volumetric integration (Section 5's modelling step; Curless & Levoy 1996).
+    * \note The paper runs VripPack; these defaults are ours (doc/design.md#volumetric-integration).
     * \ingroup surface
     */
   struct VolumetricIntegrationParams

@@ -18,9 +18,8 @@ namespace pcl
     * \a max_fraction of the finite points is stray; the largest group never is.
     *
     * Why it matters: Eq. 1 takes D as the largest principal extents of any single view, and the
-    * dimension checks of Eq. 9 compare registered views with D. On dragonStandRight_264 a 14-point
-    * patch 65 mm below the rest of the scan set D's smallest extent alone and pushed the combined
-    * extents of the correctly registered views 28 d_res past D, so global verification refused it.
+    * dimension checks of Eq. 9 compare registered views with D, so one speck can set D alone and make
+    * verification refuse correctly registered views (doc/design.md#stray-fragment-removal).
     * \param[in] points the scan's points (NaN points are never stray)
     * \param[in] gap grouping distance (> 0), e.g. 20 d_res
     * \param[in] max_fraction groups with fewer than this fraction of the points are stray, in [0, 1)
