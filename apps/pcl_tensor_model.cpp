@@ -67,6 +67,13 @@ namespace
     pcl::VolumetricIntegrationParams integration;
   };
 
+  std::string
+  baseName (const std::string& path)
+  {
+    const auto slash = path.find_last_of ("/\\");
+    return slash == std::string::npos ? path : path.substr (slash + 1);
+  }
+
   /** Fail before the work, not after it, when an output cannot be written. */
   void
   requireWritableFolder (const std::string& file)
@@ -106,6 +113,10 @@ namespace
     o.views = pcl_tensor_tools::scanFileArguments (argc, argv, {o.output, o.conf});
     if (o.views.size () < 2)
       PCL_TENSOR_THROW (pcl::BadArgumentException, "expected at least two VIEW files (.ply or .pcd); see --help");
+    for (const auto& view : o.views)
+      if (!pcl::io::isStanfordConfFileName (baseName (view)))
+        PCL_TENSOR_THROW (pcl::BadArgumentException, "'" << view << "': a .conf line names each view, and cannot hold "
+                          "white space in a file name; rename it");
     o.json = find_switch (argc, argv, "--json");
     o.registration.loop = find_switch (argc, argv, "--loop");
     o.registration.global_registration = !find_switch (argc, argv, "--no-global");
@@ -138,13 +149,6 @@ namespace
       views.push_back (std::move (view));
     }
     return views;
-  }
-
-  std::string
-  baseName (const std::string& path)
-  {
-    const auto slash = path.find_last_of ("/\\");
-    return slash == std::string::npos ? path : path.substr (slash + 1);
   }
 
   void

@@ -301,8 +301,7 @@ namespace
   MatchingCost
   matchingCost (const EvalView& model, const EvalView& scene, const Options& o, bool index)
   {
-    pcl::registration::CorrespondenceEstimationTensor matcher;
-    pcl::registration::configureMatcher (matcher, o.params);
+    pcl::registration::CorrespondenceEstimationTensor matcher = tensorMatcher (o.params);
     matcher.setUseThetaIndex (index);
     matcher.setInputSource (scene.tensors);
     matcher.setInputTarget (model.tensors);

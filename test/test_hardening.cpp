@@ -30,7 +30,7 @@
 namespace
 {
   using Cloud = pcl::PointCloud<pcl::PointXYZ>;
-  using pcl::registration::TensorRegistration;
+  using TensorRegistration = pcl::registration::TensorRegistration<pcl::PointXYZ>;
   using pcl::registration::TensorRegistrationParams;
 
   std::string

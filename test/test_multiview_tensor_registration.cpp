@@ -8,6 +8,8 @@
 #include <pcl/simulation/view_set.h>
 
 #include <algorithm>
+#include <functional>
+#include <limits>
 
 namespace
 {
@@ -164,37 +166,71 @@ TEST (MultiviewTensorRegistration, UnusableViewIsReportedNotThrown)
 
 TEST (MultiviewTensorRegistration, GlobalVerificationRefusalMovesOnToTheNextMatch)
 {
-  // The hook itself: registerTensorViews() asks the acceptor about every locally verified
-  // hypothesis; one that always refuses leaves the views unregistered after trying further matches.
+  // The hook itself: TensorRegistration asks the acceptor about every locally verified hypothesis;
+  // one that always refuses leaves the views unregistered after trying further matches.
   const auto& views = exampleRing ();
   TensorRegistrationParams params;
-  const auto model = std::make_shared<const pcl::PreparedScan> (pcl::prepareScan (*views[0].view.cloud, views[0].view.viewpoint, params.preparation));
-  const auto scene = std::make_shared<const pcl::PreparedScan> (pcl::prepareScan (*views[1].view.cloud, views[1].view.viewpoint, params.preparation));
-  const auto dims = pcl::computeObjectDimensions<pcl::PointNormal> ({model->fine.cloud.get (), scene->fine.cloud.get ()});
-  const auto model_tensors = computeViewTensors (*model, dims, params);
-  const auto scene_tensors = computeViewTensors (*scene, dims, params);
+  params.scene_tensor_batches = 1;
+  const auto model = prepareTensorView (*views[0].view.cloud, views[0].view.viewpoint, params.preparation);
+  const auto scene = prepareTensorView (*views[1].view.cloud, views[1].view.viewpoint, params.preparation);
+  const auto dims = pcl::computeObjectDimensions<pcl::PointNormal> ({model->scan->fine.cloud.get (), scene->scan->fine.cloud.get ()});
+  const auto register_with = [&] (const HypothesisAcceptor& accept) {
+    TensorRegistration<pcl::PointXYZ> registration;
+    registration.setParams (params);
+    registration.setObjectDimensions (dims);
+    registration.setInputTarget (views[0].view.cloud);
+    registration.setInputSource (views[1].view.cloud);
+    registration.setTargetView (withTensors (*model, dims, params));
+    registration.setSourceView (withTensors (*scene, dims, params));
+    registration.setHypothesisAcceptor (accept);
+    pcl::PointCloud<pcl::PointXYZ> aligned;
+    registration.align (aligned);
+    return registration.getReport ();
+  };
 
   std::size_t asked = 0;
-  TensorRegistrationReport accepted;
-  registerTensorViews (model, model_tensors, scene, scene_tensors, dims, params, accepted,
-                       [&] (const TensorVerificationResult& r) { ++asked; return r.passed (); });
+  const TensorRegistrationReport accepted = register_with ([&] (const TensorVerificationResult& r) { ++asked; return r.passed (); });
   ASSERT_TRUE (accepted.registered);
   EXPECT_EQ (asked, 1u);
   EXPECT_EQ (accepted.hypotheses_refused, 0u);
 
-  // Global verification with a D 10 d_res too small refuses the true pose and every repeat of it.
+  // Global verification with a D 10 d_res too small refuses the true pose and every repeat of it
+  // (the acceptor sees transforms between the centred meshes).
   pcl::ObjectDimensions small = dims;
   small.D.array () -= 10.0 * accepted.resolution;
   GlobalVerification global (small, accepted.resolution);
-  global.addView (*model->fine.cloud, Eigen::Affine3d::Identity ());
-  TensorRegistrationReport refused;
-  registerTensorViews (model, model_tensors, scene, scene_tensors, dims, params, refused, [&] (const TensorVerificationResult& r) {
-    return global.accepts (*scene->fine.cloud, Eigen::Affine3d (r.transform.cast<double> ()));
+  global.addView (*model->scan->fine.cloud, Eigen::Affine3d::Identity ());
+  const TensorRegistrationReport refused = register_with ([&] (const TensorVerificationResult& r) {
+    return global.accepts (*scene->scan->fine.cloud, Eigen::Affine3d (r.transform.cast<double> ()));
   });
   EXPECT_FALSE (refused.registered);
   EXPECT_GE (refused.hypotheses_refused, 1u);
   EXPECT_GT (refused.hypotheses_tried, accepted.hypotheses_tried) << "no further match was tried after the refusal";
   EXPECT_TRUE (refused.transform.isIdentity ());
+}
+
+TEST (MultiviewTensorRegistration, BadParametersAreRefusedBeforeAnyViewIsRead)
+{
+  // setParams checks every value: a bad global-step value no longer waits for the pairwise work.
+  const auto refuses = [] (const std::function<void (MultiviewRegistrationParams&)>& spoil) {
+    MultiviewRegistrationParams params;
+    spoil (params);
+    MultiviewTensorRegistration registration;
+    EXPECT_THROW (registration.setParams (params), pcl::BadArgumentException);
+    EXPECT_THROW (checkParams (params), pcl::BadArgumentException);
+  };
+  refuses ([] (auto& p) { p.global.max_distance = -1.0; });
+  refuses ([] (auto& p) { p.global.sample_points = 0; });
+  refuses ([] (auto& p) { p.global.max_normal_angle = 200.0; });
+  refuses ([] (auto& p) { p.global.min_rotation = std::numeric_limits<double>::quiet_NaN (); });
+  refuses ([] (auto& p) { p.global_verification.tolerance = -1.0; });
+  refuses ([] (auto& p) { p.global_verification.checked_dimensions = 4; });
+  refuses ([] (auto& p) { p.object_dimensions = Eigen::Vector3d (1.0, 0.0, 1.0); });
+  refuses ([] (auto& p) { p.max_references = -2; });
+  refuses ([] (auto& p) { p.min_overlap = 1.5; });
+  refuses ([] (auto& p) { p.pairwise.grid_size = 0; });
+  MultiviewTensorRegistration registration;
+  EXPECT_NO_THROW (registration.setParams (MultiviewRegistrationParams ()));
 }
 
 TEST (MultiviewTensorRegistration, KnownDimensionsReplaceEq1)

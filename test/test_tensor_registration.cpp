@@ -10,7 +10,7 @@
 
 namespace
 {
-  using pcl::registration::TensorRegistration;
+  using TensorRegistration = pcl::registration::TensorRegistration<pcl::PointXYZ>;
 
   /** A ring of 12 views, 30 degrees apart, of \a object, at 300 x 300 (about 25,000 points each). */
   std::vector<pcl::SyntheticView>

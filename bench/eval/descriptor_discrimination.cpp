@@ -79,8 +79,7 @@ namespace pcl_tensor_eval
     const Eigen::Affine3d truth = groundTruth (model, scene);
     DiscriminationErrors errors;
 
-    pcl::registration::CorrespondenceEstimationTensor matcher;
-    pcl::registration::configureMatcher (matcher, tensor_params);
+    pcl::registration::CorrespondenceEstimationTensor matcher = tensorMatcher (tensor_params);
     matcher.setInputTarget (sectionEightTensors (model, dims, bin, tensor_params, params, rng));
     matcher.setInputSource (sectionEightTensors (scene, dims, bin, tensor_params, params, rng));
     pcl::Correspondences correspondences;

@@ -71,6 +71,38 @@ namespace pcl_tensor_eval
     return dims;
   }
 
+  pcl::registration::TensorView::Ptr
+  tensorView (const EvalView& view, bool tensors)
+  {
+    auto v = std::make_shared<pcl::registration::TensorView> ();
+    v->scan = view.prepared;
+    if (tensors)
+      v->tensors = view.tensors;
+    return v;
+  }
+
+  pcl::registration::CorrespondenceEstimationTensor
+  tensorMatcher (const pcl::registration::TensorRegistrationParams& params)
+  {
+    pcl::registration::CorrespondenceEstimationTensor matcher;
+    matcher.setOverlapThreshold (params.overlap_threshold);
+    matcher.setCorrelationThreshold (params.correlation_threshold);
+    matcher.setThetaBinWidth (params.theta_bin_width);
+    matcher.setOrder (params.order);
+    return matcher;
+  }
+
+  void
+  setUpVerification (pcl::registration::CorrespondenceRejectorTensorVerification& verification, const EvalView& model,
+                     const EvalView& scene, const pcl::ObjectDimensions& dims,
+                     const pcl::registration::TensorRegistrationParams& params)
+  {
+    verification.setModel (model.prepared, model.tensors);
+    verification.setScene (scene.prepared, scene.tensors);
+    verification.setObjectDimensions (dims);
+    verification.setParams (params.verification);
+  }
+
   void
   printViews (const EvalViews& views, const pcl::ObjectDimensions& dims)
   {

@@ -6,6 +6,7 @@
 #include <pcl/common/object_dimensions.h>
 #include <pcl/common/scan_mesh.h>
 #include <pcl/features/tensor_descriptor.h>
+#include <pcl/registration/correspondence_rejection_tensor_verification.h>
 #include <pcl/registration/tensor_registration.h>
 #include <pcl/simulation/synthetic_views.h>
 #include <pcl/surface/scan_preparation.h>
@@ -67,6 +68,20 @@ namespace pcl_tensor_eval
   /** \brief Print D and one line per prepared view (points, d_res, tensors, times). */
   void
   printViews (const EvalViews& views, const pcl::ObjectDimensions& dims);
+
+  /** \brief The view as TensorRegistration takes it: its meshes and, with \a tensors, its tensors. */
+  pcl::registration::TensorView::Ptr
+  tensorView (const EvalView& view, bool tensors = true);
+
+  /** \brief A tensor matcher set from \a params, as TensorRegistration sets its own. */
+  pcl::registration::CorrespondenceEstimationTensor
+  tensorMatcher (const pcl::registration::TensorRegistrationParams& params);
+
+  /** \brief Local verification of \a scene against \a model with D = \a dims, as TensorRegistration sets it. */
+  void
+  setUpVerification (pcl::registration::CorrespondenceRejectorTensorVerification& verification, const EvalView& model,
+                     const EvalView& scene, const pcl::ObjectDimensions& dims,
+                     const pcl::registration::TensorRegistrationParams& params);
 
   /** \brief All pairs (i < j) of \a n views, model = i, scene = j. */
   std::vector<std::pair<int, int>>

@@ -7,6 +7,7 @@
 #include <pcl/registration/correspondence_estimation_tensor.h>
 #include <pcl/registration/correspondence_rejection_tensor_verification.h>
 #include <pcl/registration/registration_error.h>
+#include <pcl/registration/tensor_match.h>
 
 #include <fstream>
 #include <stdexcept>
@@ -18,15 +19,14 @@ namespace pcl_tensor_eval
                    const pcl::registration::TensorRegistrationParams& params)
   {
     using namespace pcl::registration;
-    // The same matching and verification set-up as registerTensorViews().
-    CorrespondenceEstimationTensor estimation;
-    configureMatcher (estimation, params);
+    // The same matching and verification set-up as TensorRegistration.
+    CorrespondenceEstimationTensor estimation = tensorMatcher (params);
     estimation.setInputSource (scene.tensors);
     estimation.setInputTarget (model.tensors);
     pcl::Correspondences correspondences;
     estimation.determineCorrespondences (correspondences);
     CorrespondenceRejectorTensorVerification verification;
-    configureVerifier (verification, model.prepared, model.tensors, scene.prepared, scene.tensors, dims, params);
+    setUpVerification (verification, model, scene, dims, params);
 
     MatchDiagnosis d;
     d.model = model.name;
@@ -37,7 +37,9 @@ namespace pcl_tensor_eval
     long rank = 0;
     for (const TensorMatch& match : estimation.getMatches ())
     {
-      const Eigen::Matrix4f hypothesis = hypothesisOf (match, *model.tensors, *scene.tensors);
+      const pcl::TensorDescriptor& scene_tensor = (*scene.tensors)[match.scene];
+      const Eigen::Matrix4f hypothesis = transformFromTensorPair ((*model.tensors)[match.model],
+                                                                  match.scene_flipped ? flipPairOrder (scene_tensor) : scene_tensor);
       const pcl::RegistrationError e = pcl::registrationError (Eigen::Affine3d (hypothesis.cast<double> ()), truth, d_res);
       const bool good = e.rotation_deg <= kGoodHypothesisRotationDeg && e.translation_resolutions <= kGoodHypothesisTranslationResolutions;
       TensorVerificationResult result;

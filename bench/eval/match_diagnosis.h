@@ -29,7 +29,7 @@ namespace pcl_tensor_eval
     std::size_t bad_passed = 0;           ///< matches with a bad hypothesis that passed verification (wrong answers)
   };
 
-  /** \brief Match the pair as registerTensorViews() does, then score and verify every match's hypothesis. */
+  /** \brief Match the pair as TensorRegistration does, then score and verify every match's hypothesis. */
   MatchDiagnosis
   diagnoseMatches (const EvalView& model, const EvalView& scene, const pcl::ObjectDimensions& dims,
                    const pcl::registration::TensorRegistrationParams& params);

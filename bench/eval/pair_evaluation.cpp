@@ -86,13 +86,19 @@ namespace pcl_tensor_eval
                       const pcl::registration::TensorRegistrationParams& params,
                       pcl::registration::TensorRegistrationReport* full_report)
   {
-    pcl::registration::TensorRegistrationReport report;
     pcl::StopWatch watch;
-    // As TensorRegistration does: the scene's tensors batch by batch (its precomputed ones with one batch).
-    if (params.scene_tensor_batches > 1)
-      pcl::registration::registerTensorViewsInBatches (model.prepared, model.tensors, scene.prepared, dims, params, report);
-    else
-      pcl::registration::registerTensorViews (model.prepared, model.tensors, scene.prepared, scene.tensors, dims, params, report);
+    // The views prepared once; the scene's tensors batch by batch, as TensorRegistration computes them
+    // (its precomputed ones with one batch).
+    pcl::registration::TensorRegistration<pcl::PointNormal> registration;
+    registration.setParams (params);
+    registration.setObjectDimensions (dims);
+    registration.setInputTarget (model.prepared->fine.cloud);
+    registration.setInputSource (scene.prepared->fine.cloud);
+    registration.setTargetView (tensorView (model));
+    registration.setSourceView (tensorView (scene, params.scene_tensor_batches == 1));
+    pcl::PointCloud<pcl::PointNormal> aligned;
+    registration.align (aligned);
+    const pcl::registration::TensorRegistrationReport& report = registration.getReport ();
     const PairResult result = scoredReport (model, scene, report, watch.getTime ());
     if (full_report)
       *full_report = report;

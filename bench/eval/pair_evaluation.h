@@ -52,7 +52,7 @@ namespace pcl_tensor_eval
   scoreTransform (const EvalView& model, const EvalView& scene, bool registered, const Eigen::Matrix4f& transform,
                   PairResult& result);
 
-  /** \brief Register the scene view to the model view with registerTensorViews() and score it.
+  /** \brief Register the scene view to the model view with TensorRegistration on the views prepared once, and score it.
     * \param[out] report when given, the registration's whole report (e.g. the winning match) */
   PairResult
   evaluateTensorPair (const EvalView& model, const EvalView& scene, const pcl::ObjectDimensions& dims,

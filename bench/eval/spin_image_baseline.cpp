@@ -125,8 +125,7 @@ namespace pcl_tensor_eval
     if (matches.size () > static_cast<std::size_t> (params.candidates))
       matches.resize (params.candidates);
     pcl::registration::CorrespondenceRejectorTensorVerification verification;
-    pcl::registration::configureVerifier (verification, model.prepared, model.tensors, scene.prepared, scene.tensors, dims,
-                                          tensor_params);
+    setUpVerification (verification, model, scene, dims, tensor_params);
     // Slack for vertex placement: the reduced meshes' vertices sit a few fine d_res apart at best.
     const double slack = 2.0 * verification.getResolution ();
     for (const SpinImageMatch& seed : matches)

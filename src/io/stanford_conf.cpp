@@ -72,6 +72,12 @@ namespace pcl
       return entries;
     }
 
+    bool
+    isStanfordConfFileName (const std::string& file)
+    {
+      return !file.empty () && file.find_first_of (" \t\r\n\v\f") == std::string::npos;
+    }
+
     void
     saveStanfordConf (const std::string& path, const std::vector<StanfordConfEntry>& entries)
     {
@@ -79,7 +85,7 @@ namespace pcl
       out.precision (std::numeric_limits<double>::max_digits10);
       for (const auto& e : entries)
       {
-        if (e.file.empty () || e.file.find_first_of (" \t\r\n") != std::string::npos)
+        if (!isStanfordConfFileName (e.file))
           PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << e.file << "' into a .conf file: empty or white space");
         const auto& t = e.translation;
         const auto& q = e.quaternion;

@@ -308,28 +308,39 @@ namespace pcl
     {
       if (!model_tensors_ || !scene_tensors_)
         PCL_TENSOR_THROW (BadArgumentException, "verification of correspondences needs the model and scene tensors");
+      if (!input_matches_.empty () && input_matches_.size () != original.size ())
+        PCL_TENSOR_THROW (BadArgumentException, "verification was given " << input_matches_.size () << " match details for "
+                          << original.size () << " correspondences");
       pcl::Correspondences kept;
       accepted_transforms_.clear ();
-      for (const auto& c : original)
+      results_.clear ();
+      for (std::size_t i = 0; i < original.size (); ++i)
       {
         if (max_accepted_ > 0 && kept.size () >= max_accepted_)
           break;
+        const pcl::Correspondence& c = original[i];
         if (c.index_query < 0 || static_cast<std::size_t> (c.index_query) >= scene_tensors_->size ()
             || c.index_match < 0 || static_cast<std::size_t> (c.index_match) >= model_tensors_->size ())
           PCL_TENSOR_THROW (BadArgumentException, "correspondence " << c.index_query << " -> " << c.index_match
                             << " is outside the tensor clouds");
-        // A correspondence does not say which pair order matched; an ambiguous scene tensor
-        // (TensorDescriptor::order_ambiguous) is tried in both.
         const TensorDescriptor& model = (*model_tensors_)[c.index_match];
         const TensorDescriptor& scene = (*scene_tensors_)[c.index_query];
         TensorVerificationResult result;
-        if (verify (transformFromTensorPair (model, scene), result)
-            || (scene.order_ambiguous && verify (transformFromTensorPair (model, flipPairOrder (scene)), result)))
+        bool passed;
+        if (!input_matches_.empty ())
+          passed = verify (transformFromTensorPair (model, input_matches_[i].scene_flipped ? flipPairOrder (scene) : scene), result);
+        else
+          // A bare correspondence does not say which pair order matched: an ambiguous one is tried in both.
+          passed = verify (transformFromTensorPair (model, scene), result)
+                   || (scene.order_ambiguous && verify (transformFromTensorPair (model, flipPairOrder (scene)), result));
+        results_.push_back (result);
+        if (passed)
         {
           kept.push_back (c);
           accepted_transforms_.push_back (result.transform);
         }
       }
+      input_matches_.clear ();
       remaining.swap (kept);
     }
   }

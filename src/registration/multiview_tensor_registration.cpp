@@ -91,7 +91,7 @@ namespace pcl
 
     namespace
     {
-      using TensorsPtr = pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr;
+      using Views = std::vector<TensorView::ConstPtr>;
 
       void
       report (const MultiviewProgress& progress, MultiviewStage stage, std::size_t done, std::size_t total)
@@ -150,12 +150,12 @@ namespace pcl
         result.resolution = resolution / static_cast<double> (fine.size ());
       }
 
-      /** Stage 2: each usable view's tensors, once. */
-      std::vector<TensorsPtr>
+      /** Stage 2: each usable view's tensors, once: the views every registration takes (TensorView). */
+      Views
       computeTensors (const MultiviewRegistrationParams& params, const MultiviewProgress& progress,
                       MultiviewRegistrationResult& result)
       {
-        std::vector<TensorsPtr> tensors (result.views.size ());
+        Views tensors (result.views.size ());
         for (std::size_t i = 0; i < result.views.size (); ++i)
         {
           ViewRegistrationStatus& view = result.views[i];
@@ -164,7 +164,9 @@ namespace pcl
             pcl::StopWatch watch;
             try
             {
-              tensors[i] = computeViewTensors (*view.prepared, result.dimensions, params.pairwise);
+              TensorView prepared;
+              prepared.scan = view.prepared;
+              tensors[i] = withTensors (prepared, result.dimensions, params.pairwise);
             }
             catch (const InvalidScanException& e)
             {
@@ -182,8 +184,8 @@ namespace pcl
       {
         public:
           OrderedRegistration (const MultiviewRegistrationParams& params, const ViewPairs& pairs,
-                               const std::vector<TensorsPtr>& tensors, MultiviewRegistrationResult& result)
-            : params_ (params), pairs_ (pairs), tensors_ (tensors), result_ (result),
+                               const std::vector<MultiviewInput>& inputs, const Views& tensors, MultiviewRegistrationResult& result)
+            : params_ (params), pairs_ (pairs), inputs_ (inputs), tensors_ (tensors), result_ (result),
               verification_ (result.dimensions, result.resolution, params.global_verification)
           {}
 
@@ -240,6 +242,23 @@ namespace pcl
             return refs;
           }
 
+          /** One pair through TensorRegistration, on the views prepared once, with global verification. */
+          TensorRegistrationReport
+          registerPair (int reference, int view, const HypothesisAcceptor& global) const
+          {
+            TensorRegistration<pcl::PointXYZ> registration;
+            registration.setParams (params_.pairwise);
+            registration.setObjectDimensions (result_.dimensions);
+            registration.setInputTarget (inputs_[reference].cloud);
+            registration.setInputSource (inputs_[view].cloud);
+            registration.setTargetView (tensors_[reference]);
+            registration.setSourceView (tensors_[view]);
+            registration.setHypothesisAcceptor (global);
+            pcl::PointCloud<pcl::PointXYZ> aligned;
+            registration.align (aligned);
+            return registration.getReport ();
+          }
+
           bool
           registerView (int view)
           {
@@ -258,9 +277,7 @@ namespace pcl
                 excess = verification_.excess (*scene->fine.cloud, pose);
                 return excess <= params_.global_verification.tolerance;
               };
-              TensorRegistrationReport pair;
-              registerTensorViews (result_.views[ref].prepared, tensors_[ref], scene, tensors_[view], result_.dimensions,
-                                   params_.pairwise, pair, global);
+              const TensorRegistrationReport pair = registerPair (ref, view, global);
               status.globally_refused += pair.hypotheses_refused;
               const double overlap = pair.verification.fine_correspondences / static_cast<double> (scene->fine.cloud->size ());
               if (pair.registered && overlap > best_overlap)
@@ -296,7 +313,8 @@ namespace pcl
 
           const MultiviewRegistrationParams& params_;
           const ViewPairs& pairs_;
-          const std::vector<TensorsPtr>& tensors_;
+          const std::vector<MultiviewInput>& inputs_;
+          const Views& tensors_;
           MultiviewRegistrationResult& result_;
           GlobalVerification verification_;
           std::vector<int> registered_;          ///< in the order they were registered
@@ -389,11 +407,11 @@ namespace pcl
         return result;  // no usable view: none is registered, each says why
 
       watch.reset ();
-      const std::vector<TensorsPtr> tensors = computeTensors (params_, progress_, result);
+      const Views tensors = computeTensors (params_, progress_, result);
       result.timings.tensors_ms = watch.getTime ();
 
       watch.reset ();
-      OrderedRegistration (params_, pairs_, tensors, result).run (progress_);
+      OrderedRegistration (params_, pairs_, views, tensors, result).run (progress_);
       result.timings.pairwise_ms = watch.getTime ();
 
       watch.reset ();

@@ -1,15 +1,15 @@
 # pcl_tensor_model --json with view and output paths holding a quote, a backslash and non-ASCII
-# characters: the report must be JSON that python3 -m json.tool accepts, and must give the names back.
+# characters (no white space: a .conf line cannot hold it): the report must be JSON that python3 -m json.tool accepts, and must give the names back.
 #   cmake -DMODEL=app -DPYTHON=python3 -DVIEWS="a.ply;b.ply;c.ply" -DOUT_DIR=dir -P json_names.cmake
 file(REMOVE_RECURSE ${OUT_DIR})
 file(MAKE_DIRECTORY ${OUT_DIR})
-set(names "view \"quoted\".ply" "back\\slash.ply" "vue_été_视图.ply")
+set(names "view\"quoted\".ply" "back\\slash.ply" "vue_été_视图.ply")
 set(copies "")
 foreach(view name IN ZIP_LISTS VIEWS names)
   file(COPY_FILE ${view} "${OUT_DIR}/${name}")
   list(APPEND copies "${OUT_DIR}/${name}")
 endforeach()
-execute_process(COMMAND ${MODEL} ${copies} --viewpoint 0,0,0 -o "${OUT_DIR}/model \"q\" é.ply" --json
+execute_process(COMMAND ${MODEL} ${copies} --viewpoint 0,0,0 -o "${OUT_DIR}/model\"q\"é.ply" --json
                 RESULT_VARIABLE code OUTPUT_FILE ${OUT_DIR}/report.json ERROR_VARIABLE err TIMEOUT 600)
 if(NOT code EQUAL 0)
   message(FATAL_ERROR "pcl_tensor_model exited ${code}, expected 0:\n${err}")

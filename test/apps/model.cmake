@@ -38,6 +38,8 @@ foreach(option "--voxel;-1" "--dims;1;2" "--dims-tolerance;-1" "--faces;3")
   pcl_tensor_case(app_model_param${tag} 2 COMMAND ${MODEL} ${VIEW0} ${VIEW1} -o ${MODEL_OUT}/param.ply ${option})
 endforeach()
 pcl_tensor_case(app_model_help 0 COMMAND ${MODEL} --help)
+# A view whose name a .conf line cannot hold is refused before any view is read.
+pcl_tensor_case(app_model_view_name_with_space 2 COMMAND ${MODEL} ${VIEW0} "/nonexistent/view one.ply" -o ${MODEL_OUT}/space.ply)
 
 # The --json report with file names that need escaping (a quote, a backslash, non-ASCII characters).
 find_package(Python3 COMPONENTS Interpreter)

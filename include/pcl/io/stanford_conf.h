@@ -45,6 +45,10 @@ namespace pcl
     std::vector<StanfordConfEntry>
     loadStanfordConf (const std::string& path);
 
+    /** \brief True when \a file can be named in a bmesh line: not empty, without white space. */
+    bool
+    isStanfordConfFileName (const std::string& file);
+
     /** \brief Write entries as bmesh lines, with enough digits (max_digits10) that loadStanfordConf()
       * gives back the same doubles.
       * \throw pcl::IOException when the file cannot be written or a file name contains white space

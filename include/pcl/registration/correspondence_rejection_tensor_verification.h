@@ -6,12 +6,14 @@
 #include <pcl/common/object_dimensions.h>
 #include <pcl/features/tensor_descriptor.h>
 #include <pcl/registration/correspondence_rejection.h>
+#include <pcl/registration/tensor_match.h>
 #include <pcl/registration/tensor_verification.h>
 #include <pcl/search/bounded_nearest_search.h>
 #include <pcl/surface/range_view_projection.h>
 #include <pcl/surface/scan_preparation.h>
 
 #include <memory>
+#include <vector>
 
 namespace pcl
 {
@@ -47,6 +49,15 @@ namespace pcl
         void setModel (const shared_ptr<const PreparedScan>& scan, const TensorCloudConstPtr& tensors);
         /** \brief The scene view (source): its fine and reduced meshes, and its tensors. */
         void setScene (const shared_ptr<const PreparedScan>& scan, const TensorCloudConstPtr& tensors);
+        /** \brief Replace only the scene's tensors (e.g. the next batch, TensorEstimation::setPairBatch):
+          * the search structures built for the scene's meshes are kept. */
+        void setSceneTensors (const TensorCloudConstPtr& tensors) { scene_tensors_ = tensors; }
+
+        /** \brief The matcher's details of the correspondences to verify next, index for index
+          * (CorrespondenceEstimationTensor::getMatches()): each is then verified in the pair order it
+          * matched in. Without them (empty, the default) a scene tensor whose pair order is ambiguous
+          * is tried in both orders. */
+        void setInputMatches (const std::vector<TensorMatch>& matches) { input_matches_ = matches; }
 
         /** \brief The object's dimensions D (Eq. 1), from all its views when known. */
         void setObjectDimensions (const ObjectDimensions& dims) { dims_ = dims; }
@@ -83,6 +94,11 @@ namespace pcl
         /** \brief Refined transforms of the correspondences kept by the last getRemainingCorrespondences(). */
         const std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>>&
         getAcceptedTransforms () const { return accepted_transforms_; }
+
+        /** \brief What verify() found for each correspondence the last getRemainingCorrespondences()
+          * examined, in order (it stops early with setMaxAccepted()): the stage each failed at. */
+        const std::vector<TensorVerificationResult>&
+        getResults () const { return results_; }
 
       protected:
         void
@@ -125,6 +141,8 @@ namespace pcl
         std::unique_ptr<RangeViewProjection> model_view_, scene_view_;
         PointCloudN::Ptr scene_sample_{new PointCloudN}, model_sample_{new PointCloudN};
         std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> accepted_transforms_;
+        std::vector<TensorMatch> input_matches_;
+        std::vector<TensorVerificationResult> results_;
     };
   }
 }

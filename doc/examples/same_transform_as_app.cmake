@@ -1,0 +1,22 @@
+# The composed example and pcl_tensor_register on the same pair must print the same transform,
+# digit for digit (both write each float exactly through the same JSON writer).
+#   cmake -DEXAMPLE=compose_pipeline -DAPP=pcl_tensor_register -DMODEL=a.ply -DSCENE=b.ply -P same_transform_as_app.cmake
+foreach(run EXAMPLE APP)
+  if(run STREQUAL "APP")
+    set(command ${APP} ${MODEL} ${SCENE} --json)
+  else()
+    set(command ${EXAMPLE} ${MODEL} ${SCENE})
+  endif()
+  execute_process(COMMAND ${command} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 300)
+  if(NOT code EQUAL 0)
+    message(FATAL_ERROR "${run} exited ${code}:\n${out}\n${err}")
+  endif()
+  if(NOT out MATCHES "\"transform\": ?\\[[^]]*\\]")
+    message(FATAL_ERROR "${run} printed no transform:\n${out}")
+  endif()
+  set(${run}_TRANSFORM "${CMAKE_MATCH_0}")
+endforeach()
+if(NOT EXAMPLE_TRANSFORM STREQUAL APP_TRANSFORM)
+  message(FATAL_ERROR "the example gave ${EXAMPLE_TRANSFORM}\nthe app gave ${APP_TRANSFORM}")
+endif()
+message(STATUS "same transform: ${APP_TRANSFORM}")

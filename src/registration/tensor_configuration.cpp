@@ -1,0 +1,85 @@
+/*
+ * pcl_tensor: the pipeline's components set from TensorRegistrationParams (private to the library).
+ */
+#include "tensor_configuration.h"
+
+#include <pcl/common/tensor_exceptions.h>
+
+#include <cmath>
+
+namespace pcl
+{
+  namespace registration
+  {
+    namespace detail
+    {
+      void
+      configureEstimation (ViewTensorEstimation& estimation, const TensorRegistrationParams& params)
+      {
+        estimation.setGridSize (params.grid_size);
+        estimation.setPartnersPerVertex (params.partners_per_vertex);
+        estimation.setMinNormalAngle (params.min_normal_angle);
+        estimation.setRegionGrowing (params.region_growing);
+      }
+
+      void
+      configureMatcher (CorrespondenceEstimationTensor& matcher, const TensorRegistrationParams& params)
+      {
+        matcher.setOverlapThreshold (params.overlap_threshold);
+        matcher.setCorrelationThreshold (params.correlation_threshold);
+        matcher.setThetaBinWidth (params.theta_bin_width);
+        matcher.setOrder (params.order);
+      }
+
+      void
+      configureVerifier (CorrespondenceRejectorTensorVerification& verifier, const TensorView& model,
+                         const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& scene_tensors, const TensorView& scene,
+                         const ObjectDimensions& dims, const TensorRegistrationParams& params)
+      {
+        verifier.setModel (model.scan, model.tensors);
+        verifier.setScene (scene.scan, scene_tensors);
+        verifier.setObjectDimensions (dims);
+        verifier.setParams (params.verification);
+      }
+    }
+
+    void
+    checkParams (const TensorRegistrationParams& params)
+    {
+      checkScanPreparationParams (params.preparation);
+      detail::ViewTensorEstimation estimation;
+      detail::configureEstimation (estimation, params);
+      CorrespondenceEstimationTensor matcher;
+      detail::configureMatcher (matcher, params);
+      CorrespondenceRejectorTensorVerification verifier;
+      verifier.setParams (params.verification);
+      if (params.scene_tensor_batches < 1 || params.batch_hypotheses < 0)
+        PCL_TENSOR_THROW (BadArgumentException, "the scene's tensors need at least one batch and a non-negative number of "
+                          "hypotheses per batch, got " << params.scene_tensor_batches << " and " << params.batch_hypotheses);
+      if (params.max_hypotheses < 0)
+        PCL_TENSOR_THROW (BadArgumentException, "the hypothesis cap must be 0 (none) or positive, got " << params.max_hypotheses);
+      if (!(params.repeat_rotation >= 0.0 && params.repeat_translation >= 0.0) ||
+          !std::isfinite (params.repeat_rotation) || !std::isfinite (params.repeat_translation))
+        PCL_TENSOR_THROW (BadArgumentException, "repeat tolerances must be finite and non-negative");
+      if (params.ambiguity_checks < 0 || !(params.ambiguity_rotation >= 0.0 && params.ambiguity_rotation <= 180.0))
+        PCL_TENSOR_THROW (BadArgumentException, "ambiguity checks must be non-negative and their rotation in [0, 180] degrees, got "
+                          << params.ambiguity_checks << " and " << params.ambiguity_rotation);
+    }
+
+    pcl::PointCloud<pcl::TensorDescriptor>::Ptr
+    computeViewTensors (const PreparedScan& scan, const ObjectDimensions& dims, const TensorRegistrationParams& params,
+                        int batches, int batch)
+    {
+      detail::ViewTensorEstimation estimation;
+      estimation.setPairBatch (batches, batch);
+      estimation.setInputCloud (scan.reduced.cloud);
+      estimation.setInputNormals (scan.reduced.cloud);
+      estimation.setPolygons (scan.reduced.polygons);
+      estimation.setObjectDimensions (dims);
+      detail::configureEstimation (estimation, params);
+      pcl::PointCloud<pcl::TensorDescriptor>::Ptr tensors (new pcl::PointCloud<pcl::TensorDescriptor>);
+      estimation.computeOrThrow (*tensors);
+      return tensors;
+    }
+  }
+}

@@ -1,0 +1,347 @@
+/*
+ * pcl_tensor: the hypothesis search of pairwise registration (private to the library): tensor
+ * matching and verification through the PCL correspondence estimator and rejector, the scene's
+ * tensors batch by batch (Fig. 7), refuted repeats skipped and the ambiguity check.
+ */
+#include "tensor_hypothesis_search.h"
+#include "tensor_configuration.h"
+
+#include <pcl/common/time.h>
+#include <pcl/registration/tensor_match.h>
+
+#include <cmath>
+
+namespace pcl
+{
+  namespace registration
+  {
+    namespace detail
+    {
+      namespace
+      {
+        using TensorCloud = pcl::PointCloud<pcl::TensorDescriptor>;
+
+        /** cos(angle / 2) of the rotation from \a b to \a a, from the trace, without acos. */
+        double
+        cosHalfAngleBetween (const Eigen::Matrix4f& a, const Eigen::Matrix4f& b)
+        {
+          const Eigen::Matrix3f d = a.topLeftCorner<3, 3> () * b.topLeftCorner<3, 3> ().transpose ();
+          return 0.5 * std::sqrt (std::max (0.0, 1.0 + static_cast<double> (d.trace ())));
+        }
+
+        /** Two poses within \a degrees of each other that put \a point within \a distance of the same place. */
+        bool
+        posesAgree (const Eigen::Matrix4f& a, const Eigen::Matrix4f& b, const Eigen::Vector4f& point, double degrees, double distance)
+        {
+          return cosHalfAngleBetween (a, b) >= std::cos (degrees * M_PI / 360.0) &&
+                 static_cast<double> (((a - b) * point).norm ()) <= distance;
+        }
+
+        /** Hypotheses that reached ICP and failed; a close repeat would fail the same way. */
+        class RefutedHypotheses
+        {
+          public:
+            RefutedHypotheses (double degrees, double distance) : cos_half_ (std::cos (degrees * M_PI / 360.0)), distance_ (distance) {}
+
+            bool
+            contains (const Eigen::Matrix4f& t) const
+            {
+              for (const auto& r : refuted_)
+                if (cosHalfAngleBetween (t, r) >= cos_half_ && (t.topRightCorner<3, 1> () - r.topRightCorner<3, 1> ()).norm () <= distance_)
+                  return true;
+              return false;
+            }
+
+            void add (const Eigen::Matrix4f& t) { refuted_.push_back (t); }
+
+          private:
+            double cos_half_, distance_;
+            std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> refuted_;
+        };
+
+        /** The hypothesis of one match (Eq. 7-8), with the scene tensor in the order that matched. */
+        Eigen::Matrix4f
+        hypothesisOf (const TensorMatch& match, const TensorCloud& model_tensors, const TensorCloud& scene_tensors)
+        {
+          const TensorDescriptor& scene = scene_tensors[match.scene];
+          return transformFromTensorPair (model_tensors[match.model], match.scene_flipped ? flipPairOrder (scene) : scene);
+        }
+
+        /** The report of a registration about to start: nothing tried, nothing found. */
+        void
+        resetReport (TensorRegistrationReport& report, std::size_t model_tensors, const ObjectDimensions& dims)
+        {
+          report.model_tensors = model_tensors;
+          report.scene_tensors = 0;
+          report.matches = 0;
+          report.comparisons = 0;
+          report.registered = false;
+          report.transform = Eigen::Matrix4f::Identity ();
+          report.failures.fill (0);
+          report.hypotheses_tried = 0;
+          report.hypotheses_skipped = 0;
+          report.hypotheses_refused = 0;
+          report.ambiguity_checks = 0;
+          report.ambiguous = false;
+          report.guess_accepted = false;
+          report.rival_transform = Eigen::Matrix4f::Identity ();
+          report.dimensions = dims;
+          report.timings.matching_ms = 0.0;
+          report.timings.verification_ms = 0.0;
+        }
+
+        Eigen::Vector4f
+        centroidOf (const pcl::PointCloud<pcl::PointNormal>& cloud)
+        {
+          Eigen::Vector4d sum = Eigen::Vector4d::Zero ();
+          for (const auto& p : cloud)
+            sum.head<3> () += p.getVector3fMap ().cast<double> ();
+          sum /= static_cast<double> (std::max<std::size_t> (1, cloud.size ()));
+          sum.w () = 1.0;
+          return sum.cast<float> ();
+        }
+
+        /** Matching and verification of one view pair, batch after batch of scene tensors: the refuted
+          * hypotheses, the hypothesis count and the verifier's search structures carry over. */
+        class HypothesisSearch
+        {
+          public:
+            HypothesisSearch (const TensorView& model, const TensorCloud::ConstPtr& model_tensors, const TensorView& scene,
+                              const TensorCloud::ConstPtr& scene_tensors, const ObjectDimensions& dims,
+                              const TensorRegistrationParams& params, TensorRegistrationReport& report, const HypothesisAcceptor& accept)
+              : model_tensors_ (model_tensors), params_ (params), report_ (report), accept_ (accept),
+                scene_centroid_ (centroidOf (*scene.scan->fine.cloud)),
+                far_distance_ (0.5 * dims.mean ())
+            {
+              TensorView model_with_tensors (model);
+              model_with_tensors.tensors = model_tensors;
+              configureVerifier (verification_, model_with_tensors, scene_tensors, scene, dims, params);
+              report.resolution = verification_.getResolution ();
+              refuted_ = RefutedHypotheses (params.repeat_rotation, params.repeat_translation * report.resolution);
+            }
+
+            /** The caller's guess, verified before any tensor match: taken when it passes. */
+            bool
+            tryGuess (const Eigen::Matrix4f& guess)
+            {
+              pcl::StopWatch watch;
+              ++report_.hypotheses_tried;
+              TensorVerificationResult result;
+              const bool passed = verification_.verify (guess, result) && (!accept_ || accept_ (result));
+              if (passed)
+              {
+                report_.registered = report_.guess_accepted = true;
+                report_.verification = result;
+                report_.transform = result.transform;
+              }
+              else if (result.stage != TensorVerificationStage::PASSED)
+                ++report_.failures[static_cast<std::size_t> (result.stage)];
+              report_.timings.verification_ms += watch.getTime ();
+              return passed;
+            }
+
+            /** Match \a batch (scene tensors from index \a first on) and verify its first \a budget
+              * matches in order (0: all); the others wait for finish().
+              * \return true once registered or out of hypotheses: no later batch is needed */
+            bool
+            search (const TensorCloud::ConstPtr& batch, std::size_t first, std::size_t budget = 0)
+            {
+              pcl::StopWatch watch;
+              CorrespondenceEstimationTensor estimation;
+              configureMatcher (estimation, params_);
+              estimation.setInputSource (batch);
+              estimation.setInputTarget (model_tensors_);
+              pcl::Correspondences correspondences;
+              estimation.determineCorrespondences (correspondences);
+              report_.matches += correspondences.size ();
+              report_.comparisons += estimation.getComparisons ();
+              report_.timings.matching_ms += watch.getTime ();
+              watch.reset ();
+              const std::vector<TensorMatch> matches = estimation.getMatches ();
+              const std::size_t now = budget > 0 ? std::min (budget, matches.size ()) : matches.size ();
+              // The deferred matches may still serve as rivals of a pose this batch verifies.
+              const bool done = verify (matches, now, batch, first);
+              if (!done)
+                for (auto m = matches.begin () + static_cast<std::ptrdiff_t> (now); m != matches.end (); ++m)
+                {
+                  deferred_.push_back (*m);
+                  deferred_.back ().scene += static_cast<int> (first);
+                }
+              report_.timings.verification_ms += watch.getTime ();
+              return done;
+            }
+
+            /** Verify the matches search() deferred, all batches' together in the matcher's order, on
+              * \a scene_tensors, every batch's tensors in the order they were computed. */
+            void
+            finish (const TensorCloud::ConstPtr& scene_tensors)
+            {
+              pcl::StopWatch watch;
+              sortTensorMatches (deferred_, params_.order);
+              verify (deferred_, deferred_.size (), scene_tensors, 0);
+              deferred_.clear ();
+              report_.timings.verification_ms += watch.getTime ();
+            }
+
+          private:
+            bool
+            capReached () const
+            {
+              return params_.max_hypotheses > 0 && report_.hypotheses_tried >= static_cast<std::size_t> (params_.max_hypotheses);
+            }
+
+            /** Local verification through the rejector's PCL interface, then the caller's acceptor;
+              * refuted poses are remembered. */
+            bool
+            passes (const TensorMatch& match, const TensorCloud::ConstPtr& batch, const Eigen::Matrix4f& hypothesis,
+                    TensorVerificationResult& result)
+            {
+              pcl::Correspondences one{pcl::Correspondence (match.scene, match.model, 1.0f - match.correlation)}, kept;
+              verification_.setSceneTensors (batch);
+              verification_.setInputMatches ({match});
+              verification_.getRemainingCorrespondences (one, kept);
+              result = verification_.getResults ().front ();
+              if (kept.empty ())
+              {
+                if (result.stage == TensorVerificationStage::FINE_OVERLAP || result.stage == TensorVerificationStage::FINE_DIMENSIONS)
+                  refuted_.add (hypothesis);
+                return false;
+              }
+              if (accept_ && !accept_ (result))
+              {
+                // Refused by the caller (global verification): a close repeat converges to the same pose.
+                ++report_.hypotheses_refused;
+                refuted_.add (hypothesis);
+                return false;
+              }
+              return true;
+            }
+
+            /** A second pose, other than \a pose, that the matches after \a from also verify; the matches
+              * whose hypothesis is near \a pose are taken as leading to it and skipped. */
+            bool
+            findRival (const std::vector<TensorMatch>& matches, std::size_t from, const TensorCloud::ConstPtr& batch,
+                       const Eigen::Matrix4f& pose)
+            {
+              int checks = 0;
+              for (std::size_t k = from; k < matches.size () && checks < params_.ambiguity_checks; ++k)
+              {
+                const Eigen::Matrix4f hypothesis = hypothesisOf (matches[k], *model_tensors_, *batch);
+                if (posesAgree (hypothesis, pose, scene_centroid_, params_.ambiguity_rotation, far_distance_) || refuted_.contains (hypothesis))
+                  continue;
+                ++checks;
+                ++report_.ambiguity_checks;
+                TensorVerificationResult result;
+                if (passes (matches[k], batch, hypothesis, result) &&
+                    !posesAgree (result.transform, pose, scene_centroid_, params_.repeat_rotation,
+                                 params_.repeat_translation * report_.resolution))
+                {
+                  report_.rival_transform = result.transform;
+                  return true;
+                }
+              }
+              return false;
+            }
+
+            /** Verify the first \a count of \a matches in order; all of them may serve as rivals. */
+            bool
+            verify (const std::vector<TensorMatch>& matches, std::size_t count, const TensorCloud::ConstPtr& batch,
+                    std::size_t first)
+            {
+              for (std::size_t k = 0; k < count; ++k)
+              {
+                if (capReached ())
+                  return true;
+                const TensorMatch& match = matches[k];
+                const Eigen::Matrix4f hypothesis = hypothesisOf (match, *model_tensors_, *batch);
+                if (refuted_.contains (hypothesis))
+                {
+                  ++report_.hypotheses_skipped;
+                  continue;
+                }
+                ++report_.hypotheses_tried;
+                TensorVerificationResult result;
+                if (!passes (match, batch, hypothesis, result))
+                {
+                  if (result.stage != TensorVerificationStage::PASSED)
+                    ++report_.failures[static_cast<std::size_t> (result.stage)];
+                  continue;
+                }
+                // Two poses that both verify: no evidence picks one, so neither is reported.
+                report_.ambiguous = findRival (matches, k + 1, batch, result.transform);
+                report_.registered = !report_.ambiguous;
+                report_.winning_match = match;
+                report_.winning_match.scene += static_cast<decltype (match.scene)> (first);
+                report_.verification = result;
+                if (report_.registered)
+                  report_.transform = result.transform;
+                return true;
+              }
+              return capReached ();
+            }
+
+            TensorCloud::ConstPtr model_tensors_;
+            const TensorRegistrationParams& params_;
+            TensorRegistrationReport& report_;
+            const HypothesisAcceptor& accept_;
+            CorrespondenceRejectorTensorVerification verification_;
+            RefutedHypotheses refuted_{0.0, 0.0};
+            Eigen::Vector4f scene_centroid_;  ///< where poses are compared (homogeneous)
+            double far_distance_;             ///< mean(D) / 2: a pose moving the centroid farther is another pose
+            std::vector<TensorMatch> deferred_;  ///< scene indices into all batches' tensors
+        };
+
+        /** The scene's tensors batch by batch, each matched and verified before the next (Fig. 7). */
+        void
+        searchInBatches (HypothesisSearch& hypotheses, const TensorView& scene, const TensorCloud::Ptr& scene_tensors,
+                         const ObjectDimensions& dims, const TensorRegistrationParams& params, TensorRegistrationReport& report)
+        {
+          const auto budget = static_cast<std::size_t> (params.batch_hypotheses);
+          for (int batch = 0; batch < params.scene_tensor_batches; ++batch)
+          {
+            pcl::StopWatch watch;
+            const TensorCloud::ConstPtr tensors = computeViewTensors (*scene.scan, dims, params, params.scene_tensor_batches, batch);
+            report.timings.tensors_ms += watch.getTime ();
+            const std::size_t first = scene_tensors->size ();
+            *scene_tensors += *tensors;
+            report.scene_tensors = scene_tensors->size ();
+            if (!tensors->empty () && hypotheses.search (tensors, first, budget))
+              return;
+          }
+          hypotheses.finish (scene_tensors);
+        }
+      }
+
+      void
+      searchTensorViews (const TensorView& model, const TensorView& scene, const ObjectDimensions& dims,
+                         const TensorRegistrationParams& params, const HypothesisAcceptor& accept,
+                         const Eigen::Matrix4f* guess, TensorRegistrationReport& report)
+      {
+        TensorCloud::ConstPtr model_tensors = model.tensors;
+        if (!model_tensors)
+        {
+          pcl::StopWatch watch;
+          model_tensors = computeViewTensors (*model.scan, dims, params);
+          report.timings.tensors_ms += watch.getTime ();
+        }
+        resetReport (report, model_tensors->size (), dims);
+        // Every batch joins the scene's tensors, so that the winning match's index refers to them all.
+        const TensorCloud::Ptr batches (new TensorCloud);
+        const TensorCloud::ConstPtr scene_tensors = scene.tensors ? scene.tensors : batches;
+        report.scene_tensors = scene.tensors ? scene.tensors->size () : 0;
+        // A view without tensors (a plane: no two normals theta_d apart) matches nothing: not registered.
+        if (!guess && (model_tensors->empty () || (scene.tensors && scene.tensors->empty ())))
+          return;
+        HypothesisSearch hypotheses (model, model_tensors, scene, scene_tensors, dims, params, report, accept);
+        if (guess && hypotheses.tryGuess (*guess))
+          return;
+        if (model_tensors->empty () || (scene.tensors && scene.tensors->empty ()))
+          return;
+        if (scene.tensors)
+          hypotheses.search (scene.tensors, 0);
+        else
+          searchInBatches (hypotheses, scene, batches, dims, params, report);
+      }
+    }
+  }
+}
