@@ -53,6 +53,7 @@ namespace
     print_info ("  --max-memory MB    refuse a voxel volume larger than this (default %zu)\n", v.max_memory_bytes >> 20);
     print_info ("  --faces N          faces per reduced mesh (default %d)\n", m.pairwise.preparation.target_faces);
     print_info ("  --viewpoint x,y,z  perspective sensor at x,y,z looking at each scan (default: a PCD's pose; the pushbroom a PLY grid fits; else +z)\n");
+    print_info ("  -j N               threads (default 0: every core); the result is the same for any number\n");
     print_info ("  --json             print a JSON summary instead of text\n");
     print_info ("Exit codes: 0 every view registered and the model written; 3 some views could not be registered\n"
                 "(the model is built from the others and the refused views are named on stderr); 2 bad input or usage.\n");
@@ -63,6 +64,7 @@ namespace
     std::vector<std::string> views;
     std::string output, conf, pairs;
     bool json = false;
+    unsigned threads = 0;
     pcl::registration::MultiviewRegistrationParams registration;
     pcl::VolumetricIntegrationParams integration;
   };
@@ -118,6 +120,7 @@ namespace
         PCL_TENSOR_THROW (pcl::BadArgumentException, "'" << view << "': a .conf line names each view, and cannot hold "
                           "white space in a file name; rename it");
     o.json = find_switch (argc, argv, "--json");
+    o.threads = pcl_tensor_tools::parseThreads (argc, argv);
     o.registration.loop = find_switch (argc, argv, "--loop");
     o.registration.global_registration = !find_switch (argc, argv, "--no-global");
     parse_argument (argc, argv, "--references", o.registration.max_references);
@@ -226,6 +229,7 @@ namespace
     // Parameters are checked before any view is read.
     pcl::registration::MultiviewTensorRegistration registration;
     registration.setParams (o.registration);
+    registration.setNumberOfThreads (o.threads);
     pcl::ScanVolumetricIntegration integration;
     integration.setParams (o.integration);
     timer.tic ();

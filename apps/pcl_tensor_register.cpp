@@ -31,6 +31,7 @@ namespace
     print_info ("Prints the 4x4 transform that maps SCENE into MODEL's frame.\n\n");
     print_info ("  -o FILE            write SCENE transformed into MODEL's frame (PLY)\n");
     print_info ("  --json             print a JSON report instead of text\n");
+    print_info ("  -j N               threads (default 0: every core); the result is the same for any number\n");
     print_info ("  --faces N          faces per reduced mesh (default %d)\n", d.preparation.target_faces);
     print_info ("  --grid N           tensor grid size (default %d)\n", d.grid_size);
     print_info ("  --tr T             overlap ratio threshold t_r, Eq. 5 (default %g)\n", d.overlap_threshold);
@@ -111,6 +112,7 @@ namespace
 
     pcl::registration::TensorRegistration registration;
     registration.setParams (parseParams (argc, argv));
+    registration.setNumberOfThreads (pcl_tensor_tools::parseThreads (argc, argv));
     pcl::ObjectDimensions dims;
     if (pcl_tensor_tools::parseObjectDimensions (argc, argv, dims.D))
       registration.setObjectDimensions (dims);

@@ -28,10 +28,9 @@ namespace pcl_tensor_tools
 
   /** For a tool that runs once and must answer fast: each stage frees clouds of megabytes that the
     * next allocates again. glibc returns such blocks to the system (mmap, trim) and each page faults
-    * back in; kept in the process, they are reused. On pcl_tensor_register bun000 bun045 this saves
-    * 2,500 of 16,500 page faults and 60 ms of 0.62 s (perf stat), for 6 MB more peak memory. On the
-    * 15 dragon scans pcl_tensor_model gained 6% (5.65 -> 5.33 s) for 15% more memory (218 -> 249 MB),
-    * so only pcl_tensor_register calls it. */
+    * back in; kept in the process, they are reused. pcl_tensor_register saves page faults and time
+    * for a little more peak memory; pcl_tensor_model gained too little for its extra memory, so only
+    * pcl_tensor_register calls it (figures: doc/log.md). */
   inline void
   keepFreedMemoryForReuse ()
   {
@@ -95,6 +94,16 @@ namespace pcl_tensor_tools
       PCL_TENSOR_THROW (pcl::BadArgumentException, "--dims takes three positive numbers X,Y,Z");
     dims = Eigen::Vector3d (d[0], d[1], d[2]);
     return true;
+  }
+
+  /** -j N: threads (0, the default: every core). */
+  inline unsigned
+  parseThreads (int argc, char** argv)
+  {
+    int threads = 0;
+    if (pcl::console::parse_argument (argc, argv, "-j", threads) >= 0 && threads < 0)
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "-j takes a number of threads (0: every core), got " << threads);
+    return static_cast<unsigned> (threads);
   }
 
   /** --viewpoint x,y,z: a perspective sensor at that point, looking at the centroid of \a cloud.

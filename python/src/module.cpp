@@ -49,6 +49,18 @@ namespace
     return py::module_::import ("json").attr ("loads") (pcl::io::dumpJson (report));
   }
 
+  /** The threads keyword: a non-negative count, 0 (the default) for every core. */
+  unsigned
+  threadsOf (const py::object& threads)
+  {
+    if (threads.is_none ())
+      return 0;
+    const long n = threads.cast<long> ();
+    if (n < 0)
+      throw py::value_error ("threads must be 0 (every core) or positive");
+    return static_cast<unsigned> (n);
+  }
+
   /** Pops \a name from \a kwargs (None when absent). */
   py::object
   pop (py::dict& kwargs, const char* name)
@@ -65,10 +77,12 @@ namespace
                  const py::object& scene_viewpoint, py::kwargs kwargs)
   {
     const py::object dims = pop (kwargs, "object_dimensions");
+    const unsigned threads = threadsOf (pop (kwargs, "threads"));
     pcl::registration::TensorRegistrationParams params;
     applyKeywords (py::cast (&params, py::return_value_policy::reference), kwargs, "register");
     pcl::registration::TensorRegistration registration;
     registration.setParams (params);
+    registration.setNumberOfThreads (threads);
     if (!dims.is_none ())
     {
       pcl::ObjectDimensions d;
@@ -145,6 +159,7 @@ namespace
     if (py::isinstance<py::str> (views) || py::len (views) < 2)
       throw py::value_error ("build_model needs a sequence of at least two views");
     const py::object integration_kwargs = pop (kwargs, "integration");
+    const unsigned threads = threadsOf (pop (kwargs, "threads"));
     pcl::registration::MultiviewRegistrationParams params;
     params.loop = loop;
     applyKeywords (py::cast (&params, py::return_value_policy::reference), kwargs, "build_model");
@@ -155,6 +170,7 @@ namespace
     // Parameters are checked before any view is read.
     pcl::registration::MultiviewTensorRegistration registration;
     registration.setParams (params);
+    registration.setNumberOfThreads (threads);
     pcl::ScanVolumetricIntegration integration;
     integration.setParams (integration_params);
     if (!pairs.is_none ())
@@ -259,13 +275,14 @@ PYBIND11_MODULE (pcl_tensor, m)
          "arrays; a viewpoint is a Viewpoint, three numbers (a perspective sensor there) or None (the file's\n"
          "sensor, or +z for an array). Keyword parameters are RegistrationParams' fields, with the same names\n"
          "and defaults (a dict sets a nested struct: preparation=dict(target_faces=800)), plus\n"
-         "object_dimensions=(X, Y, Z). Returns a RegistrationResult; registered is False when no pose could be\n"
+         "object_dimensions=(X, Y, Z) and threads (0, the default: every core). Returns a RegistrationResult; registered is False when no pose could be\n"
          "verified, or two distinct poses could (ambiguous).");
   m.def ("build_model", &buildModel, py::arg ("views"), py::arg ("loop") = false, py::arg ("viewpoints") = py::none (),
          py::arg ("pairs") = py::none (),
          "Register views (paths or arrays, each overlapping one before it, or with pairs=[(i, j), ...]) and\n"
          "integrate them into one mesh, as pcl_tensor_model does. loop=True closes a turntable's loop.\n"
          "Keyword parameters are ModelParams' fields (pairwise=dict(...) for the pairwise ones), plus\n"
-         "integration=dict(...) for IntegrationParams. Returns a ModelResult.");
+         "integration=dict(...) for IntegrationParams, and threads (0, the default: every core). Returns a\n"
+         "ModelResult.");
   m.attr ("__version__") = PCL_TENSOR_VERSION;
 }

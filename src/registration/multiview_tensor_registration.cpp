@@ -2,12 +2,14 @@
  * pcl_tensor: automatic pairwise registration of range images with tensors.
  */
 #include <pcl/registration/multiview_tensor_registration.h>
+#include "../common/parallel_for.h"
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/common/time.h>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <mutex>
 #include <set>
 
 namespace pcl
@@ -100,13 +102,35 @@ namespace pcl
           progress (stage, done, total);
       }
 
-      /** Stage 1: M_i and M'_i of every view; a view that cannot be meshed is marked and left out. */
+      /** Progress of one stage whose steps finish on several threads, reported one at a time. */
+      class StageProgress
+      {
+        public:
+          StageProgress (const MultiviewProgress& progress, MultiviewStage stage, std::size_t total)
+            : progress_ (progress), stage_ (stage), total_ (total) {}
+
+          void
+          step ()
+          {
+            const std::lock_guard<std::mutex> lock (mutex_);
+            report (progress_, stage_, ++done_, total_);
+          }
+
+        private:
+          const MultiviewProgress& progress_;
+          MultiviewStage stage_;
+          std::size_t total_, done_{0};
+          std::mutex mutex_;
+      };
+
+      /** Stage 1: M_i and M'_i of every view, on \a threads threads; a view that cannot be meshed is
+        * marked and left out. */
       void
       prepareViews (const std::vector<MultiviewInput>& inputs, const MultiviewRegistrationParams& params,
-                    const MultiviewProgress& progress, MultiviewRegistrationResult& result)
+                    const MultiviewProgress& progress, unsigned threads, MultiviewRegistrationResult& result)
       {
-        for (std::size_t i = 0; i < inputs.size (); ++i)
-        {
+        StageProgress stage (progress, MultiviewStage::PREPARATION, inputs.size ());
+        pcl::detail::parallelFor (inputs.size (), threads, [&] (std::size_t i) {
           ViewRegistrationStatus& view = result.views[i];
           view.name = inputs[i].name;
           pcl::StopWatch watch;
@@ -122,8 +146,8 @@ namespace pcl
             view.error = errorDescription (e);
           }
           view.prepare_ms = watch.getTime ();
-          report (progress, MultiviewStage::PREPARATION, i + 1, inputs.size ());
-        }
+          stage.step ();
+        });
       }
 
       /** D from every usable view (Eq. 1), unless it is known, and the mean d_res. */
@@ -150,14 +174,15 @@ namespace pcl
         result.resolution = resolution / static_cast<double> (fine.size ());
       }
 
-      /** Stage 2: each usable view's tensors, once: the views every registration takes (TensorView). */
+      /** Stage 2: each usable view's tensors, once, on \a threads threads: the views every
+        * registration takes (TensorView). */
       Views
-      computeTensors (const MultiviewRegistrationParams& params, const MultiviewProgress& progress,
+      computeTensors (const MultiviewRegistrationParams& params, const MultiviewProgress& progress, unsigned threads,
                       MultiviewRegistrationResult& result)
       {
         Views tensors (result.views.size ());
-        for (std::size_t i = 0; i < result.views.size (); ++i)
-        {
+        StageProgress stage (progress, MultiviewStage::TENSORS, result.views.size ());
+        pcl::detail::parallelFor (result.views.size (), threads, [&] (std::size_t i) {
           ViewRegistrationStatus& view = result.views[i];
           if (view.prepared)
           {
@@ -174,8 +199,8 @@ namespace pcl
             }
             view.tensors_ms = watch.getTime ();
           }
-          report (progress, MultiviewStage::TENSORS, i + 1, result.views.size ());
-        }
+          stage.step ();
+        });
         return tensors;
       }
 
@@ -184,8 +209,9 @@ namespace pcl
       {
         public:
           OrderedRegistration (const MultiviewRegistrationParams& params, const ViewPairs& pairs,
-                               const std::vector<MultiviewInput>& inputs, const Views& tensors, MultiviewRegistrationResult& result)
-            : params_ (params), pairs_ (pairs), inputs_ (inputs), tensors_ (tensors), result_ (result),
+                               const std::vector<MultiviewInput>& inputs, const Views& tensors, unsigned threads,
+                               MultiviewRegistrationResult& result)
+            : params_ (params), pairs_ (pairs), inputs_ (inputs), tensors_ (tensors), threads_ (threads), result_ (result),
               verification_ (result.dimensions, result.resolution, params.global_verification)
           {}
 
@@ -259,38 +285,65 @@ namespace pcl
             return registration.getReport ();
           }
 
+          /** One reference tried for one view: the pair's report and the last global excess seen. */
+          struct Attempt
+          {
+            TensorRegistrationReport pair;
+            double excess = 0.0;
+          };
+
+          Attempt
+          attempt (int reference, int view) const
+          {
+            Attempt a;
+            const Eigen::Affine3d ref_pose = result_.views[reference].pairwise_pose;
+            const auto& scene = *result_.views[view].prepared->fine.cloud;
+            const HypothesisAcceptor global = [&] (const TensorVerificationResult& local) {
+              const Eigen::Affine3d pose = ref_pose * Eigen::Affine3d (local.transform.cast<double> ());
+              a.excess = verification_.excess (scene, pose);
+              return a.excess <= params_.global_verification.tolerance;
+            };
+            a.pair = registerPair (reference, view, global);
+            return a;
+          }
+
+          /** Tries the references of \a view, most recently registered first, and keeps the first that
+            * registers (or, with keep_best, the one of largest overlap). Several are tried at once on
+            * threads_ threads, but their results are taken in order and those after the first success
+            * are dropped, so the outcome is the one of trying them one at a time. */
           bool
           registerView (int view)
           {
             ViewRegistrationStatus& status = result_.views[view];
-            const auto& scene = status.prepared;
+            const std::size_t scene_points = status.prepared->fine.cloud->size ();
             pcl::StopWatch watch;
             double best_overlap = -1.0;
-            for (const int ref : references (view))
+            const std::vector<int> refs = references (view);
+            const std::size_t batch = params_.keep_best ? refs.size () : pcl::detail::threadCount (threads_);
+            bool done = false;
+            for (std::size_t first = 0; first < refs.size () && !done; first += batch)
             {
-              tried_.insert ({ref, view});
-              ++status.references_tried;
-              const Eigen::Affine3d ref_pose = result_.views[ref].pairwise_pose;
-              double excess = 0.0;
-              const HypothesisAcceptor global = [&] (const TensorVerificationResult& local) {
-                const Eigen::Affine3d pose = ref_pose * Eigen::Affine3d (local.transform.cast<double> ());
-                excess = verification_.excess (*scene->fine.cloud, pose);
-                return excess <= params_.global_verification.tolerance;
-              };
-              const TensorRegistrationReport pair = registerPair (ref, view, global);
-              status.globally_refused += pair.hypotheses_refused;
-              const double overlap = pair.verification.fine_correspondences / static_cast<double> (scene->fine.cloud->size ());
-              if (pair.registered && overlap > best_overlap)
+              std::vector<Attempt> attempts (std::min (batch, refs.size () - first));
+              pcl::detail::parallelFor (attempts.size (), threads_, [&] (std::size_t k) { attempts[k] = attempt (refs[first + k], view); });
+              for (std::size_t k = 0; k < attempts.size () && !done; ++k)
               {
-                best_overlap = overlap;
-                status.pairwise = pair;
-                status.reference = ref;
-                status.global_excess = excess;
-                if (!params_.keep_best)
-                  break;
+                const int ref = refs[first + k];
+                const TensorRegistrationReport& pair = attempts[k].pair;
+                tried_.insert ({ref, view});
+                ++status.references_tried;
+                status.globally_refused += pair.hypotheses_refused;
+                const double overlap = pair.verification.fine_correspondences / static_cast<double> (scene_points);
+                if (pair.registered && overlap > best_overlap)
+                {
+                  best_overlap = overlap;
+                  status.pairwise = pair;
+                  status.reference = ref;
+                  status.global_excess = attempts[k].excess;
+                  done = !params_.keep_best;
+                }
+                else if (best_overlap < 0.0)
+                  status.pairwise = pair;
               }
-              else if (best_overlap < 0.0)
-                status.pairwise = pair;
             }
             status.pairwise_ms += watch.getTime ();
             if (best_overlap < 0.0)
@@ -315,6 +368,7 @@ namespace pcl
           const ViewPairs& pairs_;
           const std::vector<MultiviewInput>& inputs_;
           const Views& tensors_;
+          const unsigned threads_;
           MultiviewRegistrationResult& result_;
           GlobalVerification verification_;
           std::vector<int> registered_;          ///< in the order they were registered
@@ -400,18 +454,18 @@ namespace pcl
       pcl::StopWatch total, watch;
       MultiviewRegistrationResult result;
       result.views.resize (views.size ());
-      prepareViews (views, params_, progress_, result);
+      prepareViews (views, params_, progress_, threads_, result);
       measureObject (params_, result);
       result.timings.prepare_ms = watch.getTime ();
       if (result.resolution <= 0.0)
         return result;  // no usable view: none is registered, each says why
 
       watch.reset ();
-      const Views tensors = computeTensors (params_, progress_, result);
+      const Views tensors = computeTensors (params_, progress_, threads_, result);
       result.timings.tensors_ms = watch.getTime ();
 
       watch.reset ();
-      OrderedRegistration (params_, pairs_, views, tensors, result).run (progress_);
+      OrderedRegistration (params_, pairs_, views, tensors, threads_, result).run (progress_);
       result.timings.pairwise_ms = watch.getTime ();
 
       watch.reset ();

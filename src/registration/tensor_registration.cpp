@@ -3,6 +3,7 @@
  */
 #include <pcl/registration/impl/tensor_registration.hpp>
 #include "tensor_hypothesis_search.h"
+#include "../common/parallel_for.h"
 
 #include <pcl/common/time.h>
 #include <pcl/point_types.h>
@@ -29,12 +30,16 @@ namespace pcl
 
       TensorRegistrationReport
       registerViewPair (const RegistrationSide& model_side, const RegistrationSide& scene_side, const ObjectDimensions* known,
-                        const TensorRegistrationParams& params, const HypothesisAcceptor& accept, const Eigen::Matrix4f* guess)
+                        const TensorRegistrationParams& params, const HypothesisAcceptor& accept, const Eigen::Matrix4f* guess,
+                        unsigned threads)
       {
         pcl::StopWatch total, watch;
         TensorRegistrationReport report;
-        const TensorView::ConstPtr model = viewOf (model_side, params);
-        const TensorView::ConstPtr scene = viewOf (scene_side, params);
+        const RegistrationSide* sides[2] = {&model_side, &scene_side};
+        TensorView::ConstPtr views[2];
+        pcl::detail::parallelFor (2, threads, [&] (std::size_t k) { views[k] = viewOf (*sides[k], params); });
+        const TensorView::ConstPtr& model = views[0];
+        const TensorView::ConstPtr& scene = views[1];
         report.timings.prepare_ms = watch.getTime ();
         const ObjectDimensions dims = known ? *known
             : computeObjectDimensions<pcl::PointNormal> ({model->scan->fine.cloud.get (), scene->scan->fine.cloud.get ()});

@@ -5,12 +5,7 @@
 #include <pcl/common/point_tests.h>
 #include <pcl/common/tensor_exceptions.h>
 
-#include <vtkCellArray.h>
-#include <vtkDelaunay2D.h>
-#include <vtkIdList.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
-#include <vtkSmartPointer.h>
+#include "delaunay_2d.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -92,8 +87,7 @@ namespace pcl
       return triangles;
     }
 
-    /** True when the points span no area (all on one line, or all equal): vtkDelaunay2D fails on
-      * them ("edge is non-manifold") and leaks its working mesh, so they never reach it. */
+    /** True when the points span no area (all on one line, or all equal): no triangle has area. */
     bool
     spanNoArea (const std::vector<Eigen::Vector2d>& uv)
     {
@@ -118,63 +112,15 @@ namespace pcl
       return uv;
     }
 
-    /** The points in rows about one point spacing high, each row by x: the order of a scan's grid.
-      * vtkDelaunay2D locates each new point by walking from the last triangle it made, so neighbours
-      * inserted one after the other keep the walks short, and a shuffled scan triangulates several
-      * times faster in this order (figures: doc/log.md). */
-    std::vector<std::size_t>
-    rowMajorOrder (const std::vector<Eigen::Vector2d>& uv)
-    {
-      Eigen::AlignedBox2d box;
-      for (const auto& p : uv)
-        box.extend (p);
-      const double spacing = std::sqrt (box.volume () / static_cast<double> (uv.size ()));
-      std::vector<std::pair<std::int64_t, double>> key (uv.size ());
-      for (std::size_t i = 0; i < uv.size (); ++i)
-        key[i] = {static_cast<std::int64_t> ((uv[i].y () - box.min ().y ()) / spacing), uv[i].x ()};
-      std::vector<std::size_t> order (uv.size ());
-      std::iota (order.begin (), order.end (), std::size_t{0});
-      std::sort (order.begin (), order.end (), [&] (std::size_t a, std::size_t b) { return key[a] < key[b]; });
-      return order;
-    }
-
-    /** 2D Delaunay triangulation of the vertices at their retinal positions \a uv. */
+    /** 2D Delaunay triangulation of the vertices at their retinal positions \a uv, counter-clockwise. */
     std::vector<Triangle>
     triangulateDelaunay (const std::vector<Eigen::Vector2d>& uv)
     {
       if (spanNoArea (uv))
         return {};
-      const std::vector<std::size_t> order = rowMajorOrder (uv);
-      auto points = vtkSmartPointer<vtkPoints>::New ();
-      points->SetDataTypeToDouble ();
-      points->SetNumberOfPoints (static_cast<vtkIdType> (uv.size ()));
-      for (std::size_t k = 0; k < order.size (); ++k)
-        points->SetPoint (static_cast<vtkIdType> (k), uv[order[k]].x (), uv[order[k]].y (), 0.0);
-      auto input = vtkSmartPointer<vtkPolyData>::New ();
-      input->SetPoints (points);
-      auto delaunay = vtkSmartPointer<vtkDelaunay2D>::New ();
-      delaunay->SetInputData (input);
-      delaunay->SetTolerance (0.0);
-      delaunay->Update ();
-
-      vtkPolyData* output = delaunay->GetOutput ();
       std::vector<Triangle> triangles;
-      triangles.reserve (static_cast<std::size_t> (output->GetNumberOfPolys ()));
-      auto ids = vtkSmartPointer<vtkIdList>::New ();
-      vtkCellArray* polys = output->GetPolys ();
-      for (polys->InitTraversal (); polys->GetNextCell (ids);)
-      {
-        if (ids->GetNumberOfIds () != 3)
-          continue;
-        Triangle t;
-        for (int c = 0; c < 3; ++c)
-          t[c] = static_cast<pcl::index_t> (order[static_cast<std::size_t> (ids->GetId (c))]);
-        // Counter-clockwise on the retinal plane: storeOriented needs one turn for every triangle.
-        const Eigen::Vector2d e1 = uv[t[1]] - uv[t[0]], e2 = uv[t[2]] - uv[t[0]];
-        if (e1.x () * e2.y () - e1.y () * e2.x () < 0.0)
-          std::swap (t[1], t[2]);
-        triangles.push_back (t);
-      }
+      for (const auto& t : detail::delaunayTriangulation (uv))
+        triangles.push_back (Triangle{t[0], t[1], t[2]});
       return triangles;
     }
 

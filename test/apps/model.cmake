@@ -12,6 +12,14 @@ endforeach()
 pcl_tensor_case(app_model_ring 0 EXPECTED_FILE ${MODEL_OUT}/ring.conf
                 COMMAND ${MODEL} ${RING_VIEWS} --loop --viewpoint 0,0,0 -o ${MODEL_OUT}/ring.ply --json)
 
+# The same poses on 1, 2 and 4 threads (views' meshes and tensors, and references tried at once), on
+# four views of the ring, the third given before the second so that one view is tried against two.
+set(THREAD_VIEWS ${REG_VIEWS}/view_00.ply ${REG_VIEWS}/view_02.ply ${REG_VIEWS}/view_01.ply ${REG_VIEWS}/view_03.ply)
+add_test(NAME app_model_same_poses_across_threads
+  COMMAND ${CMAKE_COMMAND} "-DCOMMAND=${MODEL};${THREAD_VIEWS};--viewpoint;0,0,0;-o;${MODEL_OUT}/threads.ply;--json"
+    "-DTHREADS=1;2;4" -DPATTERN=pose -DEXPECTED_EXIT=0 -P ${CMAKE_CURRENT_SOURCE_DIR}/same_across_threads.cmake)
+set_tests_properties(app_model_same_poses_across_threads PROPERTIES FIXTURES_REQUIRED register_views TIMEOUT 900)
+
 # A view of another object (other bumps, 0.7 times the size) between two views of the example: it is
 # refused (exit 3, one line naming it) and the model is still built from the other two.
 set(OTHER_VIEWS ${APP_OUT}/model_other_views)

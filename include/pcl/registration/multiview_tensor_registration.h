@@ -160,7 +160,13 @@ namespace pcl
         void setPairs (const ViewPairs& pairs) { pairs_ = pairs; }
         const ViewPairs& getPairs () const { return pairs_; }
 
+        /** \brief Called from the working threads, one call at a time. */
         void setProgressCallback (const MultiviewProgress& progress) { progress_ = progress; }
+
+        /** \brief Threads for the views' meshes and tensors and for the references a view is tried
+          * against (0, the default: every core). The result is the same for any number. */
+        void setNumberOfThreads (unsigned threads) { threads_ = threads; }
+        unsigned getNumberOfThreads () const { return threads_; }
 
         /** \brief Register the views.
           * \throw pcl::BadArgumentException on a pair out of range or bad parameters; a view that
@@ -172,6 +178,7 @@ namespace pcl
         MultiviewRegistrationParams params_;
         ViewPairs pairs_;
         MultiviewProgress progress_;
+        unsigned threads_{0};
     };
   }
 }

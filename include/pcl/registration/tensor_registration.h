@@ -33,7 +33,8 @@ namespace pcl
         */
       TensorRegistrationReport
       registerViewPair (const RegistrationSide& model, const RegistrationSide& scene, const ObjectDimensions* dims,
-                        const TensorRegistrationParams& params, const HypothesisAcceptor& accept, const Eigen::Matrix4f* guess);
+                        const TensorRegistrationParams& params, const HypothesisAcceptor& accept, const Eigen::Matrix4f* guess,
+                        unsigned threads);
     }
 
     /** \brief Automatic pairwise registration of range images with tensors (Mian, Bennamoun & Owens,
@@ -115,6 +116,12 @@ namespace pcl
         void setVerifyGuess (bool verify) { verify_guess_ = verify; }
         bool getVerifyGuess () const { return verify_guess_; }
 
+        /** \brief Threads for preparing the two clouds at once (0: every core; default 1, since a
+          * caller that runs many registrations in parallel has its cores busy already). The result is
+          * the same for any number. */
+        void setNumberOfThreads (unsigned threads) { threads_ = threads; }
+        unsigned getNumberOfThreads () const { return threads_; }
+
         /** \brief align(), but unusable input throws instead of being logged by PCL's Registration:
           * pcl::BadArgumentException when a cloud is missing, pcl::InvalidScanException when one has
           * fewer than three finite points. Either way no transform is reported.
@@ -149,6 +156,7 @@ namespace pcl
         bool has_dims_{false};
         HypothesisAcceptor accept_;
         bool verify_guess_{false};
+        unsigned threads_{1};
         TensorRegistrationReport report_;
         /** The finite target points, searched by getFitnessScore(); built when first needed. */
         shared_ptr<pcl::KdTreeFLANN<PointTarget>> fitness_tree_;

@@ -12,8 +12,8 @@ namespace pcl
   /** \brief Turns a range image into the triangle mesh M_i of Section 2.
     *
     * Organized clouds are triangulated over their grid (the grid is the retinal plane); unorganized
-    * clouds by a 2D Delaunay triangulation (VTK's vtkDelaunay2D) of the points projected onto the
-    * sensor's retinal plane. Triangles with an edge longer than mean + k standard deviations are
+    * clouds by a 2D Delaunay triangulation (a sweep-hull of our own) of the points projected onto
+    * the sensor's retinal plane. Triangles with an edge longer than mean + k standard deviations are
     * then removed (k = 0.6 in the paper), which separates surfaces that the triangulation falsely
     * connected. The statistics are taken over each triangle's longest edge: over all edges, the
     * rule would remove every triangle of a regular grid, whose diagonals are sqrt(2) times longer.

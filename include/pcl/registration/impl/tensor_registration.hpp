@@ -67,7 +67,7 @@ namespace pcl
         scene.cloud = detail::xyzOf<PointSource> (this->input_);
       const Eigen::Matrix4f g = guess;
       report_ = detail::registerViewPair (model, scene, has_dims_ ? &dims_ : nullptr, params_, accept_,
-                                          verify_guess_ ? &g : nullptr);
+                                          verify_guess_ ? &g : nullptr, threads_);
       this->converged_ = report_.registered;
       this->final_transformation_ = report_.transform;
       this->transformation_ = report_.transform;
