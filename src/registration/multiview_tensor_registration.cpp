@@ -308,8 +308,8 @@ namespace pcl
           }
 
           /** Tries the references of \a view, most recently registered first, and keeps the first that
-            * registers (or, with keep_best, the one of largest overlap). Several are tried at once on
-            * threads_ threads, but their results are taken in order and those after the first success
+            * registers (or, with keep_best, the one of largest overlap). After the first, several are tried
+            * at once on threads_ threads, but their results are taken in order and those after the first success
             * are dropped, so the outcome is the one of trying them one at a time. */
           bool
           registerView (int view)
@@ -319,11 +319,14 @@ namespace pcl
             pcl::StopWatch watch;
             double best_overlap = -1.0;
             const std::vector<int> refs = references (view);
+            // The most recent reference alone first: in an ordered set it is the one that registers, and
+            // trying others beside it would only slow it down.
             const std::size_t batch = params_.keep_best ? refs.size () : pcl::detail::threadCount (threads_);
             bool done = false;
-            for (std::size_t first = 0; first < refs.size () && !done; first += batch)
+            for (std::size_t first = 0, size = params_.keep_best ? batch : 1; first < refs.size () && !done;
+                 first += size, size = batch)
             {
-              std::vector<Attempt> attempts (std::min (batch, refs.size () - first));
+              std::vector<Attempt> attempts (std::min (size, refs.size () - first));
               pcl::detail::parallelFor (attempts.size (), threads_, [&] (std::size_t k) { attempts[k] = attempt (refs[first + k], view); });
               for (std::size_t k = 0; k < attempts.size () && !done; ++k)
               {
