@@ -2,6 +2,8 @@
  * pcl_tensor evaluation: views of one object with ground-truth poses, prepared once for all pairs.
  */
 #include "eval_views.h"
+// The pipeline's own set-up of its matcher and verifier (private to the library), not a copy of it.
+#include "registration/tensor_configuration.h"
 
 #include <pcl/common/time.h>
 #include <pcl/io/range_scan_io.h>
@@ -85,10 +87,7 @@ namespace pcl_tensor_eval
   tensorMatcher (const pcl::registration::TensorRegistrationParams& params)
   {
     pcl::registration::CorrespondenceEstimationTensor matcher;
-    matcher.setOverlapThreshold (params.overlap_threshold);
-    matcher.setCorrelationThreshold (params.correlation_threshold);
-    matcher.setThetaBinWidth (params.theta_bin_width);
-    matcher.setOrder (params.order);
+    pcl::registration::detail::configureMatcher (matcher, params);
     return matcher;
   }
 
@@ -97,10 +96,8 @@ namespace pcl_tensor_eval
                      const EvalView& scene, const pcl::ObjectDimensions& dims,
                      const pcl::registration::TensorRegistrationParams& params)
   {
-    verification.setModel (model.prepared, model.tensors);
-    verification.setScene (scene.prepared, scene.tensors);
-    verification.setObjectDimensions (dims);
-    verification.setParams (params.verification);
+    pcl::registration::detail::configureVerifier (verification, *tensorView (model), scene.tensors, *tensorView (scene),
+                                                  dims, params);
   }
 
   void

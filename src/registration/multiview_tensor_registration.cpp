@@ -46,7 +46,7 @@ namespace pcl
       void
       checkGlobalStepParams (const MultiviewIcpParams& p)
       {
-        if (p.max_iterations < 0 || p.sample_points < 1 || !(finiteAtLeast (p.max_distance, 0.0) && p.max_distance > 0.0))
+        if (p.max_iterations < 0 || p.sample_points < 1 || !(std::isfinite (p.max_distance) && p.max_distance > 0.0))
           PCL_TENSOR_THROW (BadArgumentException, "the global step needs non-negative iterations, a positive sample and "
                             "a positive pairing distance, got " << p.max_iterations << ", " << p.sample_points << " and "
                             << p.max_distance);

@@ -329,13 +329,13 @@ namespace pcl
         const TensorCloud::Ptr batches (new TensorCloud);
         const TensorCloud::ConstPtr scene_tensors = scene.tensors ? scene.tensors : batches;
         report.scene_tensors = scene.tensors ? scene.tensors->size () : 0;
-        // A view without tensors (a plane: no two normals theta_d apart) matches nothing: not registered.
-        if (!guess && (model_tensors->empty () || (scene.tensors && scene.tensors->empty ())))
+        // A view without tensors (a plane: no two normals theta_d apart) matches nothing; only a guess
+        // can still register it.
+        const bool nothing_to_match = model_tensors->empty () || (scene.tensors && scene.tensors->empty ());
+        if (nothing_to_match && !guess)
           return;
         HypothesisSearch hypotheses (model, model_tensors, scene, scene_tensors, dims, params, report, accept);
-        if (guess && hypotheses.tryGuess (*guess))
-          return;
-        if (model_tensors->empty () || (scene.tensors && scene.tensors->empty ()))
+        if ((guess && hypotheses.tryGuess (*guess)) || nothing_to_match)
           return;
         if (scene.tensors)
           hypotheses.search (scene.tensors, 0);
