@@ -10,6 +10,8 @@
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
 #include <pcl/console/time.h>
+#include <pcl/io/atomic_file.h>
+#include <pcl/io/cached_tensor_view.h>
 #include <pcl/io/ply_io.h>
 #include <pcl/io/range_scan_io.h>
 #include <pcl/io/registration_report_json.h>
@@ -20,6 +22,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <memory>
 
 using namespace pcl::console;
 
@@ -36,12 +39,17 @@ namespace
                 "(Mian, Bennamoun & Owens, IJCV 2006), then integrated volumetrically (Curless & Levoy, 1996).\n\n");
     print_info ("Usage: %s VIEW.{ply,pcd}... -o model.ply [--conf poses.conf] [--pairs FILE] [--loop]\n"
                 "       [--voxel SIZE] [--json] [options]\n\n", name);
-    print_info ("Views are given in an order where each overlaps one before it, or with --pairs.\n");
+    print_info ("Views come in any order: every pair is ranked by its tensors and the best are registered until\n"
+                "the views are joined; views no verified pair joins to the rest make a model of their own.\n");
     print_info ("  -o FILE            the model (binary PLY mesh with normals); required\n");
     print_info ("  --conf FILE        the estimated poses, Stanford .conf style (default: the model's name with .conf)\n");
     print_info ("  --pairs FILE       overlapping pairs, one \"A B\" per line (file names or 0-based indices)\n");
+    print_info ("  --cache DIR        keep each view's meshes and tensors in DIR (pcl_tensor_prepare's cache): a re-run,\n"
+                "                     or one with views added, computes only what is new\n");
     print_info ("  --loop             a turntable: the last view overlaps the first (closes the loop)\n");
-    print_info ("  --references N     registered views each new view is tried against, newest first, 0 = all (default %d)\n", m.max_references);
+    print_info ("  --ordered          the paper's order instead (Fig. 9): each view overlaps one given before it\n");
+    print_info ("  --references N     with --ordered: registered views each new view is tried against, newest first,\n"
+                "                     0 = all (default %d)\n", m.max_references);
     print_info ("  --no-global        skip the global registration step\n");
     print_info ("  --dims X,Y,Z       the object's dimensions D when known (default: from all views, Eq. 1)\n");
     print_info ("  --dims-tolerance T how far registered views may exceed D, in d_res, after ICP (local, default %g)\n"
@@ -55,14 +63,16 @@ namespace
     print_info ("  --viewpoint x,y,z  perspective sensor at x,y,z looking at each scan (default: a PCD's pose; the pushbroom a PLY grid fits; else +z)\n");
     print_info ("  -j N               threads (default 0: every core); the result is the same for any number\n");
     print_info ("  --json             print a JSON summary instead of text\n");
-    print_info ("Exit codes: 0 every view registered and the model written; 3 some views could not be registered\n"
-                "(the model is built from the others and the refused views are named on stderr); 2 bad input or usage.\n");
+    print_info ("Outputs: one model and .conf per group of views registered together: the largest to -o and --conf,\n"
+                "the others beside them as NAME_part2.ply, NAME_part2.conf, ...\n");
+    print_info ("Exit codes: 0 every view registered into one model; 3 some views could not be registered or the\n"
+                "views form several models (each written; the views left out are named on stderr); 2 bad input or usage.\n");
   }
 
   struct ModelOptions
   {
     std::vector<std::string> views;
-    std::string output, conf, pairs;
+    std::string output, conf, pairs, cache;
     bool json = false;
     unsigned threads = 0;
     pcl::registration::MultiviewRegistrationParams registration;
@@ -112,6 +122,7 @@ namespace
     requireWritableFolder (o.output);
     requireWritableFolder (o.conf);
     parse_argument (argc, argv, "--pairs", o.pairs);
+    parse_argument (argc, argv, "--cache", o.cache);
     o.views = pcl_tensor_tools::scanFileArguments (argc, argv, {o.output, o.conf});
     if (o.views.size () < 2)
       PCL_TENSOR_THROW (pcl::BadArgumentException, "expected at least two VIEW files (.ply or .pcd); see --help");
@@ -122,6 +133,8 @@ namespace
     o.json = find_switch (argc, argv, "--json");
     o.threads = pcl_tensor_tools::parseThreads (argc, argv);
     o.registration.loop = find_switch (argc, argv, "--loop");
+    if (find_switch (argc, argv, "--ordered"))
+      o.registration.search = pcl::registration::ViewSearch::ORDERED;
     o.registration.global_registration = !find_switch (argc, argv, "--no-global");
     parse_argument (argc, argv, "--references", o.registration.max_references);
     parse_argument (argc, argv, "--faces", o.registration.pairwise.preparation.target_faces);
@@ -143,11 +156,10 @@ namespace
     std::vector<pcl::registration::MultiviewInput> views;
     for (const auto& file : files)
     {
-      pcl::io::RangeScan scan = pcl::io::loadRangeScan (file);
+      const pcl::io::RangeScan scan = pcl_tensor_tools::loadScan (file, argc, argv);
       pcl::registration::MultiviewInput view;
       view.name = file;
       view.viewpoint = scan.viewpoint;
-      pcl_tensor_tools::parseViewpoint (argc, argv, *scan.cloud, view.viewpoint);
       view.cloud = scan.cloud;
       views.push_back (std::move (view));
     }
@@ -155,13 +167,46 @@ namespace
   }
 
   void
-  saveConf (const std::string& path, const pcl::registration::MultiviewRegistrationResult& result)
+  saveConf (const std::string& path, const pcl::registration::MultiviewRegistrationResult& result, int component)
   {
     std::vector<pcl::io::StanfordConfEntry> entries;
     for (const auto& v : result.views)
-      if (v.registered)
+      if (v.registered && v.component == component)
         entries.push_back (pcl::io::StanfordConfEntry::fromPose (baseName (v.name), v.pose));
-    pcl::io::saveStanfordConf (path, entries);
+    pcl::io::AtomicFileWriter file (path);
+    pcl::io::saveStanfordConf (file.temporaryPath (), entries);
+    file.commit ();
+  }
+
+  /** One component's model, written whole or not at all: a run killed part-way leaves the previous one. */
+  void
+  saveModel (const std::string& path, const pcl::ScanMesh& model)
+  {
+    pcl::PolygonMesh mesh;
+    pcl::toPolygonMesh (model, mesh);
+    pcl::io::AtomicFileWriter file (path);
+    if (pcl::io::savePLYFileBinary (file.temporaryPath (), mesh) < 0)
+      PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << path << "'");
+    file.commit ();
+  }
+
+  /** What was built from one component. */
+  struct ComponentModel
+  {
+    std::string model, conf;
+    std::size_t views = 0;
+    pcl::ScanMesh mesh;
+    pcl::VolumetricIntegrationReport volume;
+  };
+
+  /** Where component \a c goes: -o and --conf for the first, NAME_partN beside them for the others. */
+  std::string
+  partPath (const std::string& path, int c)
+  {
+    if (c == 0)
+      return path;
+    const std::filesystem::path p (path);
+    return (p.parent_path () / (p.stem ().string () + "_part" + std::to_string (c + 1) + p.extension ().string ())).string ();
   }
 
   struct StageTimes
@@ -169,16 +214,25 @@ namespace
     double load_ms = 0.0, integration_ms = 0.0, write_ms = 0.0, total_ms = 0.0;
   };
 
+  pcl::io::JsonReport
+  toJson (const ComponentModel& m)
+  {
+    return {{"model", m.model}, {"conf", m.conf}, {"views", m.views}, {"volume", pcl::io::toJson (m.volume)},
+            {"mesh", {{"vertices", m.mesh.cloud->size ()}, {"triangles", m.mesh.polygons.size ()}}}};
+  }
+
   std::string
-  jsonSummary (const ModelOptions& o, const pcl::registration::MultiviewRegistrationResult& r,
-               const pcl::VolumetricIntegrationReport& integration, const pcl::ScanMesh& model, const StageTimes& t)
+  jsonSummary (const pcl::registration::MultiviewRegistrationResult& r, const std::vector<ComponentModel>& models,
+               const StageTimes& t)
   {
     pcl::io::JsonReport j;
-    j["model"] = o.output;
-    j["conf"] = o.conf;
+    if (!models.empty ())
+      j = toJson (models.front ());
     j.update (pcl::io::toJson (r));
-    j["volume"] = pcl::io::toJson (integration);
-    j["mesh"] = {{"vertices", model.cloud->size ()}, {"triangles", model.polygons.size ()}};
+    pcl::io::JsonReport all = pcl::io::JsonReport::array ();
+    for (const auto& m : models)
+      all.push_back (toJson (m));
+    j["models"] = std::move (all);
     auto& timings = j["timings_ms"];
     timings["load"] = t.load_ms;
     timings["integration"] = t.integration_ms;
@@ -188,31 +242,63 @@ namespace
   }
 
   void
-  printText (const pcl::registration::MultiviewRegistrationResult& r, const pcl::ScanMesh& model, const StageTimes& t,
-             const ModelOptions& o)
+  printText (const pcl::registration::MultiviewRegistrationResult& r, const std::vector<ComponentModel>& models,
+             const StageTimes& t)
   {
     print_info ("Registered "); print_value ("%zu", r.registeredCount ()); print_info (" of ");
-    print_value ("%zu", r.views.size ()); print_info (" views; model of "); print_value ("%zu", model.polygons.size ());
-    print_info (" triangles written to "); print_value ("%s", o.output.c_str ()); print_info (", poses to ");
-    print_value ("%s", o.conf.c_str ()); print_info ("\n");
-    print_info ("Times (ms): load %.0f, meshing %.0f, tensors %.0f, pairwise %.0f, global %.0f, integration %.0f, "
-                "write %.0f, total %.0f\n", t.load_ms, r.timings.prepare_ms, r.timings.tensors_ms, r.timings.pairwise_ms,
-                r.timings.global_ms, t.integration_ms, t.write_ms, t.total_ms);
+    print_value ("%zu", r.views.size ()); print_info (" views");
+    for (const auto& m : models)
+    {
+      print_info ("; a model of "); print_value ("%zu", m.views); print_info (" views, ");
+      print_value ("%zu", m.mesh.polygons.size ()); print_info (" triangles, written to "); print_value ("%s", m.model.c_str ());
+      print_info (", poses to "); print_value ("%s", m.conf.c_str ());
+    }
+    print_info ("\n");
+    print_info ("Times (ms): load %.0f, meshing %.0f, tensors %.0f, ranking %.0f, pairwise %.0f (%zu pairs), global %.0f, "
+                "integration %.0f, write %.0f, total %.0f\n", t.load_ms, r.timings.prepare_ms, r.timings.tensors_ms,
+                r.timings.ranking_ms, r.timings.pairwise_ms, r.attempts.size (), r.timings.global_ms, t.integration_ms,
+                t.write_ms, t.total_ms);
   }
 
-  /** One line on stderr per view that is not in the model, saying why. */
+  /** One line on stderr per view that is not in the main model, saying why or where it went. */
   std::size_t
-  reportRefusedViews (const pcl::registration::MultiviewRegistrationResult& r)
+  reportViewsLeftOut (const pcl::registration::MultiviewRegistrationResult& r, const std::vector<ComponentModel>& models)
   {
-    std::size_t refused = 0;
+    std::size_t left_out = 0;
     for (const auto& v : r.views)
-      if (!v.registered && static_cast<int> (&v - r.views.data ()) != r.reference)
+      if (!v.registered)
       {
-        ++refused;
+        ++left_out;
         std::cerr << "pcl_tensor_model: not registered: " << v.name << ": "
-                  << (v.error.empty () ? "no hypothesis passed local and global verification" : v.error) << std::endl;
+                  << (v.error.empty () ? "no pair with it passed local and global verification" : v.error) << std::endl;
       }
-    return refused;
+      else if (v.component > 0)
+      {
+        ++left_out;
+        std::cerr << "pcl_tensor_model: in a separate model: " << v.name << ": " << models[v.component].model << std::endl;
+      }
+    return left_out;
+  }
+
+  /** Volumetric integration of each component into its own model. */
+  std::vector<ComponentModel>
+  integrateComponents (const pcl::registration::MultiviewRegistrationResult& result, const ModelOptions& o)
+  {
+    std::vector<ComponentModel> models (static_cast<std::size_t> (std::max (result.components, 0)));
+    for (int c = 0; c < result.components; ++c)
+    {
+      ComponentModel& m = models[c];
+      m.model = partPath (o.output, c);
+      m.conf = partPath (o.conf, c);
+      pcl::ScanVolumetricIntegration integration;
+      integration.setParams (o.integration);
+      const auto views = pcl::registration::registeredIntegrationViews (result, c);
+      m.views = views.size ();
+      integration.setInputViews (views);
+      integration.reconstruct (m.mesh);
+      m.volume = integration.getReport ();
+    }
+    return models;
   }
 
   int
@@ -233,7 +319,14 @@ namespace
     pcl::ScanVolumetricIntegration integration;
     integration.setParams (o.integration);
     timer.tic ();
-    const auto inputs = loadViews (o.views, argc, argv);
+    auto inputs = loadViews (o.views, argc, argv);
+    std::unique_ptr<pcl::io::TensorViewCache> cache;
+    if (!o.cache.empty ())
+    {
+      cache = std::make_unique<pcl::io::TensorViewCache> (o.cache);
+      const auto cached = pcl::io::prepareCachedViews (*cache, inputs, o.registration, o.threads);
+      registration.setPairRegistration (pcl::io::cachedPairRegistration (*cache, cached));
+    }
     t.load_ms = timer.toc ();
     if (!o.pairs.empty ())
       registration.setPairs (pcl::io::loadViewPairs (o.pairs, o.views));
@@ -244,27 +337,25 @@ namespace
 
     timer.tic ();
     progress.update ("integration", 0, 1);
-    integration.setInputViews (pcl::registration::registeredIntegrationViews (result));
-    pcl::ScanMesh model;
-    integration.reconstruct (model);
+    std::vector<ComponentModel> models = integrateComponents (result, o);
     progress.update ("integration", 1, 1);
     progress.finish ();
     t.integration_ms = timer.toc ();
 
     timer.tic ();
-    pcl::PolygonMesh mesh;
-    pcl::toPolygonMesh (model, mesh);
-    if (pcl::io::savePLYFileBinary (o.output, mesh) < 0)
-      PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << o.output << "'");
-    saveConf (o.conf, result);
+    for (std::size_t c = 0; c < models.size (); ++c)
+    {
+      saveModel (models[c].model, models[c].mesh);
+      saveConf (models[c].conf, result, static_cast<int> (c));
+    }
     t.write_ms = timer.toc ();
     t.total_ms = total.toc ();
 
     if (o.json)
-      std::cout << jsonSummary (o, result, integration.getReport (), model, t) << std::endl;
+      std::cout << jsonSummary (result, models, t) << std::endl;
     else
-      printText (result, model, t, o);
-    return reportRefusedViews (result) > 0 ? pcl_tensor_tools::kExitNotRegistered : kExitModelled;
+      printText (result, models, t);
+    return reportViewsLeftOut (result, models) > 0 ? pcl_tensor_tools::kExitNotRegistered : kExitModelled;
   }
 }
 

@@ -7,6 +7,7 @@
 #include <pcl/common/scan_viewpoint.h>
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/console/parse.h>
+#include <pcl/io/range_scan_io.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
@@ -15,6 +16,7 @@
 #endif
 
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -118,5 +120,24 @@ namespace pcl_tensor_tools
       PCL_TENSOR_THROW (pcl::BadArgumentException, "--viewpoint takes x,y,z");
     viewpoint = pcl::ScanViewpoint::lookingAtScan (Eigen::Vector3d (v[0], v[1], v[2]), cloud);
     return true;
+  }
+
+  /** Fail before the work, not after it, when an output cannot be written: \a file's folder must exist. */
+  inline void
+  requireWritableFolder (const std::string& file)
+  {
+    const std::filesystem::path folder = std::filesystem::absolute (file).parent_path ();
+    if (!std::filesystem::is_directory (folder))
+      PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << file << "': no folder " << folder);
+  }
+
+  /** One scan file read as every tool reads it (pcl::io::loadRangeScan: the file's sensor, the
+    * pushbroom its grid fits, or +z), with --viewpoint's sensor instead when the option is given. */
+  inline pcl::io::RangeScan
+  loadScan (const std::string& file, int argc, char** argv)
+  {
+    pcl::io::RangeScan scan = pcl::io::loadRangeScan (file);
+    parseViewpoint (argc, argv, *scan.cloud, scan.viewpoint);
+    return scan;
   }
 }

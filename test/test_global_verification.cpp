@@ -2,6 +2,7 @@
 
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/registration/global_verification.h>
+#include <random>
 
 namespace
 {
@@ -74,4 +75,95 @@ TEST (GlobalVerification, RefusesBadSettings)
   pcl::registration::GlobalVerificationParams params;
   params.tolerance = -1.0;
   EXPECT_THROW (GlobalVerification (dims, 0.001, params), pcl::BadArgumentException);
+}
+
+namespace
+{
+  /** A curved patch (part of a sphere of radius 0.1 around \a centre) of n random points, fixed seed. */
+  pcl::PointCloud<pcl::PointNormal>
+  patch (const Eigen::Vector3d& centre, double spread, int n, unsigned seed)
+  {
+    std::mt19937 rng (seed);
+    std::uniform_real_distribution<double> u (-spread, spread);
+    pcl::PointCloud<pcl::PointNormal> cloud;
+    for (int i = 0; i < n; ++i)
+    {
+      const Eigen::Vector3d dir = (Eigen::Vector3d (u (rng), u (rng), 1.0)).normalized ();
+      pcl::PointNormal p;
+      p.getVector3fMap () = (centre + 0.1 * dir).cast<float> ();
+      cloud.push_back (p);
+    }
+    return cloud;
+  }
+
+  Eigen::Affine3d
+  randomPose (std::mt19937& rng)
+  {
+    std::uniform_real_distribution<double> u (-1.0, 1.0);
+    const Eigen::Quaterniond q = Eigen::Quaterniond (u (rng), u (rng), u (rng), u (rng)).normalized ();
+    return Eigen::Translation3d (0.02 * u (rng), 0.02 * u (rng), 0.02 * u (rng)) * q;
+  }
+}
+
+TEST (GlobalVerification, ExcessEqualsTheDirectComputationOverAllPoints)
+{
+  // The running extents and merged moments must give registeredDimensionExcess over all the points.
+  std::mt19937 rng (7);
+  pcl::ObjectDimensions dims;
+  dims.D = Eigen::Vector3d (0.12, 0.1, 0.05);
+  const double d_res = 0.001;
+  GlobalVerification verification (dims, d_res);
+  std::vector<Eigen::Vector3d> points;
+  std::vector<std::size_t> starts;
+  for (int v = 0; v < 6; ++v)
+  {
+    const auto view = patch (Eigen::Vector3d (0.0, 0.0, -0.1), 0.4 + 0.1 * v, 300 + 50 * v, 100 + v);
+    const Eigen::Affine3d pose = randomPose (rng);
+    std::vector<Eigen::Vector3d> with = points;
+    std::vector<std::size_t> with_starts = starts;
+    with_starts.push_back (with.size ());
+    for (const auto& p : view)
+      with.push_back (pose * p.getVector3fMap ().cast<double> ());
+    const double direct = pcl::registeredDimensionExcess (with, with_starts, dims, 2) / d_res;
+    EXPECT_NEAR (verification.excess (view, pose), direct, 1e-6) << "view " << v;
+    verification.addView (view, pose);
+    points = with;
+    starts = with_starts;
+  }
+  EXPECT_EQ (verification.views (), 6u);
+  EXPECT_EQ (verification.size (), points.size ());
+}
+
+TEST (GlobalVerification, MergingGroupsEqualsAddingTheirViewsOneByOne)
+{
+  std::mt19937 rng (11);
+  pcl::ObjectDimensions dims;
+  dims.D = Eigen::Vector3d (0.12, 0.1, 0.05);
+  const double d_res = 0.001;
+  GlobalVerification a (dims, d_res), b (dims, d_res), all (dims, d_res);
+  std::vector<pcl::PointCloud<pcl::PointNormal>> views;
+  std::vector<Eigen::Affine3d, Eigen::aligned_allocator<Eigen::Affine3d>> poses;
+  for (int v = 0; v < 5; ++v)
+  {
+    views.push_back (patch (Eigen::Vector3d (0.0, 0.0, -0.1), 0.5, 200, 200 + v));
+    poses.push_back (randomPose (rng));
+  }
+  const Eigen::Affine3d b_to_a = randomPose (rng);
+  for (int v = 0; v < 2; ++v)
+    a.addView (views[v], poses[v]);
+  for (int v = 2; v < 5; ++v)
+    b.addView (views[v], poses[v]);
+  for (int v = 0; v < 5; ++v)
+    all.addView (views[v], v < 2 ? poses[v] : b_to_a * poses[v]);
+  const auto probe = patch (Eigen::Vector3d (0.0, 0.0, -0.1), 0.3, 150, 999);
+  const double expected = all.excess (probe, Eigen::Affine3d::Identity ());
+  GlobalVerification single (dims, d_res);
+  single.addView (probe, Eigen::Affine3d::Identity ());
+  // The union checked as a group, from either side, then merged.
+  GlobalVerification merged = a;
+  merged.merge (b, b_to_a);
+  EXPECT_NEAR (merged.excess (probe, Eigen::Affine3d::Identity ()), expected, 1e-6);
+  EXPECT_NEAR (a.excess (b, b_to_a), b.excess (a, b_to_a.inverse ()), 1e-6);
+  EXPECT_EQ (merged.size (), all.size ());
+  EXPECT_EQ (merged.views (), 5u);
 }

@@ -40,7 +40,7 @@ TEST (ModelFromViews, ExampleObjectIsRebuiltFromItsRegisteredSyntheticViews)
   ASSERT_EQ (rendered.size (), 26u);
   std::vector<MultiviewInput> inputs;
   for (std::size_t i = 0; i < rendered.size (); ++i)
-    inputs.push_back ({"view" + std::to_string (i), rendered[i].view.cloud, rendered[i].view.viewpoint});
+    inputs.push_back ({"view" + std::to_string (i), rendered[i].view.cloud, rendered[i].view.viewpoint, nullptr});
 
   MultiviewTensorRegistration registration;
   const MultiviewRegistrationResult result = registration.compute (inputs);

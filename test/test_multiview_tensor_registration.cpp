@@ -8,6 +8,8 @@
 #include <pcl/simulation/view_set.h>
 
 #include <algorithm>
+#include <numeric>
+#include <random>
 #include <functional>
 #include <limits>
 
@@ -34,7 +36,7 @@ namespace
   MultiviewInput
   inputOf (const pcl::SyntheticView& view, const std::string& name)
   {
-    return {name, view.view.cloud, view.view.viewpoint};
+    return {name, view.view.cloud, view.view.viewpoint, nullptr};
   }
 
   /** The error of view \a i's estimated pose, with the estimate's frame put on the ground truth by
@@ -109,15 +111,26 @@ TEST (MultiviewTensorRegistration, ViewOfAnotherObjectIsLeftOut)
       new pcl::PointCloud<pcl::PointXYZ> (pcl_tensor_test::makeHeightField (7, 150, 150, 0.001, 0.0)));
   // Four neighbours on the ring, with a view of another object after the second.
   const std::vector<MultiviewInput> inputs{inputOf (views[0], "a"), inputOf (views[1], "b"),
-                                           MultiviewInput{"other", terrain, pcl::ScanViewpoint::fromPositiveZ ()},
+                                           MultiviewInput{"other", terrain, pcl::ScanViewpoint::fromPositiveZ (), nullptr},
                                            inputOf (views[2], "c"), inputOf (views[3], "d")};
+  for (const auto search : {pcl::registration::ViewSearch::RANKED, pcl::registration::ViewSearch::ORDERED})
+  {
   MultiviewTensorRegistration registration;
+  MultiviewRegistrationParams params;
+  params.search = search;
+  registration.setParams (params);
   const MultiviewRegistrationResult result = registration.compute (inputs);
+  SCOPED_TRACE (search == pcl::registration::ViewSearch::RANKED ? "ranked" : "ordered");
 
   EXPECT_FALSE (result.views[2].registered) << "a view of another object was registered";
+  EXPECT_EQ (result.views[2].component, -1);
   EXPECT_TRUE (result.views[2].error.empty ()) << "the view was usable: verification must refuse it, not its input";
-  EXPECT_EQ (result.views[2].references_tried, 4u) << "it is tried against every registered view";
+  if (search == pcl::registration::ViewSearch::ORDERED)
+    EXPECT_EQ (result.views[2].references_tried, 4u) << "it is tried against every registered view";
+  else  // every pair with it on the quick first pass, and its two best with every hypothesis
+    EXPECT_EQ (result.views[2].references_tried, 6u);
   EXPECT_EQ (result.registeredCount (), 4u);
+  EXPECT_EQ (result.components, 1);
   for (const std::size_t i : {0, 1, 3, 4})
   {
     const std::size_t ring = i < 2 ? i : i - 1;
@@ -127,6 +140,7 @@ TEST (MultiviewTensorRegistration, ViewOfAnotherObjectIsLeftOut)
   }
   for (const auto& p : result.pairs)
     EXPECT_TRUE (p.first != 2 && p.second != 2) << "the global step used the refused view: (" << p.first << ", " << p.second << ")";
+  }
 }
 
 TEST (MultiviewTensorRegistration, ExplicitPairsAreTheOnlyReferences)
@@ -152,7 +166,7 @@ TEST (MultiviewTensorRegistration, UnusableViewIsReportedNotThrown)
 {
   const auto& views = exampleRing ();
   pcl::PointCloud<pcl::PointXYZ>::Ptr empty (new pcl::PointCloud<pcl::PointXYZ>);
-  const std::vector<MultiviewInput> inputs{inputOf (views[0], "v0"), {"empty", empty, pcl::ScanViewpoint::fromPositiveZ ()},
+  const std::vector<MultiviewInput> inputs{inputOf (views[0], "v0"), {"empty", empty, pcl::ScanViewpoint::fromPositiveZ (), nullptr},
                                            inputOf (views[1], "v1")};
   MultiviewTensorRegistration registration;
   const MultiviewRegistrationResult result = registration.compute (inputs);
@@ -250,4 +264,105 @@ TEST (MultiviewTensorRegistration, KnownDimensionsReplaceEq1)
   const auto eq1 = pcl::computeObjectDimensions<pcl::PointNormal> (
       {measured.views[0].prepared->fine.cloud.get (), measured.views[1].prepared->fine.cloud.get ()});
   EXPECT_EQ (measured.dimensions.D, eq1.D);
+}
+
+namespace
+{
+  /** The example ring in a shuffled order (fixed seed): input k is ring view order[k]. */
+  std::vector<int>
+  shuffledOrder (std::size_t n, unsigned seed)
+  {
+    std::vector<int> order (n);
+    std::iota (order.begin (), order.end (), 0);
+    std::shuffle (order.begin (), order.end (), std::mt19937 (seed));
+    return order;
+  }
+}
+
+TEST (MultiviewTensorRegistration, ShuffledViewsAreRegisteredFromRankedPairs)
+{
+  const auto& views = exampleRing ();
+  const std::vector<int> order = shuffledOrder (views.size (), 3);
+  std::vector<MultiviewInput> inputs;
+  for (const int i : order)
+    inputs.push_back (inputOf (views[i], "view" + std::to_string (i)));
+  const MultiviewRegistrationResult result = MultiviewTensorRegistration ().compute (inputs);
+
+  ASSERT_EQ (result.registeredCount (), views.size ());
+  EXPECT_EQ (result.components, 1);
+  EXPECT_EQ (result.reference, 0) << "the lowest index keeps its frame";
+  EXPECT_EQ (result.joins.size (), views.size () - 1) << "a spanning tree joins n views with n - 1 pairs";
+  const std::size_t all_pairs = views.size () * (views.size () - 1) / 2;
+  EXPECT_EQ (result.candidates.size (), all_pairs);
+  EXPECT_LT (result.attempts.size (), all_pairs / 2) << "ranking should spare most full registrations";
+  const auto& truth_of_reference = views[order[0]].view.pose;
+  for (std::size_t k = 0; k < inputs.size (); ++k)
+  {
+    const auto& v = result.views[k];
+    EXPECT_EQ (v.component, 0);
+    EXPECT_EQ (v.reference < 0, static_cast<int> (k) == result.reference) << v.name << ": only the reference has no partner";
+    const auto error = poseError (result, v.pose, truth_of_reference, views[order[k]].view.pose);
+    EXPECT_LT (error.rotation_deg, 0.5) << v.name;
+    EXPECT_LT (error.translation_resolutions, 2.0) << v.name;
+  }
+}
+
+TEST (MultiviewTensorRegistration, TwoObjectsMakeTwoComponents)
+{
+  // Four neighbouring views of each of two different objects, interleaved: no pair across them
+  // verifies, so each object's views form a model of their own, none is thrown away.
+  pcl::ExampleObjectParams other_params;
+  other_params.seed = 77;
+  static const std::vector<pcl::SyntheticView> other = ringViews (pcl::makeExampleObject (other_params), 4);
+  const auto& views = exampleRing ();
+  std::vector<MultiviewInput> inputs;
+  for (int i = 0; i < 4; ++i)
+  {
+    inputs.push_back (inputOf (views[i], "a" + std::to_string (i)));
+    inputs.push_back (inputOf (other[i], "b" + std::to_string (i)));
+  }
+  const MultiviewRegistrationResult result = MultiviewTensorRegistration ().compute (inputs);
+
+  ASSERT_EQ (result.components, 2);
+  EXPECT_EQ (result.registeredCount (), inputs.size ());
+  for (std::size_t k = 0; k < inputs.size (); ++k)
+  {
+    const auto& v = result.views[k];
+    const bool first_object = k % 2 == 0;
+    EXPECT_EQ (v.component, result.views[first_object ? 0 : 1].component) << v.name;
+    const auto& ring = first_object ? views : other;
+    const int reference = first_object ? 0 : 1;  // the lowest index of each component keeps its frame
+    const auto error = poseError (result, v.pose, ring[0].view.pose, ring[k / 2].view.pose);
+    EXPECT_LT (error.rotation_deg, 0.5) << v.name;
+    EXPECT_LT (error.translation_resolutions, 2.0) << v.name;
+    EXPECT_EQ (v.reference < 0, static_cast<int> (k) == reference) << v.name;
+  }
+  EXPECT_NE (result.views[0].component, result.views[1].component);
+  for (const int c : {0, 1})
+    EXPECT_EQ (registeredIntegrationViews (result, c).size (), 4u);
+}
+
+TEST (MultiviewTensorRegistration, RankedSearchGivesTheSameResultOnAnyNumberOfThreads)
+{
+  const auto& views = exampleRing ();
+  const std::vector<int> order = shuffledOrder (views.size (), 5);
+  std::vector<MultiviewInput> inputs;
+  for (const int i : order)
+    inputs.push_back (inputOf (views[i], "view" + std::to_string (i)));
+  std::vector<MultiviewRegistrationResult> results;
+  for (const unsigned threads : {1u, 2u, 4u})
+  {
+    MultiviewTensorRegistration registration;
+    registration.setNumberOfThreads (threads);
+    results.push_back (registration.compute (inputs));
+  }
+  for (std::size_t r = 1; r < results.size (); ++r)
+  {
+    ASSERT_EQ (results[r].attempts.size (), results[0].attempts.size ());
+    for (std::size_t a = 0; a < results[0].attempts.size (); ++a)
+      EXPECT_TRUE (results[r].attempts[a].first == results[0].attempts[a].first &&
+                   results[r].attempts[a].second == results[0].attempts[a].second);
+    for (std::size_t k = 0; k < inputs.size (); ++k)
+      EXPECT_TRUE (results[r].views[k].pose.matrix () == results[0].views[k].pose.matrix ()) << inputs[k].name;
+  }
 }

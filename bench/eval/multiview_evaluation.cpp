@@ -101,7 +101,7 @@ namespace pcl_tensor_eval
   {
     std::vector<pcl::registration::MultiviewInput> inputs;
     for (const auto& v : views)
-      inputs.push_back ({v.name, v.cloud, v.viewpoint});
+      inputs.push_back ({v.name, v.cloud, v.viewpoint, nullptr});
     return inputs;
   }
 

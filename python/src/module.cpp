@@ -178,7 +178,7 @@ namespace
 
     std::vector<pcl::registration::MultiviewInput> inputs;
     for (const auto& in : modelInputs (views, viewpoints))
-      inputs.push_back ({in.name, in.cloud, in.viewpoint});
+      inputs.push_back ({in.name, in.cloud, in.viewpoint, nullptr});
     pcl::registration::MultiviewRegistrationResult result;
     pcl::ScanMesh mesh;
     {

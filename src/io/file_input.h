@@ -45,24 +45,32 @@ namespace pcl
           PCL_TENSOR_THROW (pcl::IOException, "cannot open '" << path << "'");
       }
 
-      /** \brief The whole content of \a path; pcl::IOException when it cannot be opened or a read
-        * fails midway. A stream read that fails looks like the end of the file, so the readers would
-        * report a device error (EIO) as a cut or malformed file: stdio's error flag tells them apart.
+      /** \brief Read \a path in blocks, handing each to \a sink (bytes, size); pcl::IOException when it
+        * cannot be opened or a read fails midway. A stream read that fails looks like the end of the
+        * file, so the readers would report a device error (EIO) as a cut or malformed file: stdio's
+        * error flag tells them apart.
         */
-      inline std::string
-      readFile (const std::string& path)
+      template <typename Sink> void
+      readFileBlocks (const std::string& path, Sink sink)
       {
         refuseDirectory (path);
         const std::unique_ptr<std::FILE, int (*) (std::FILE*)> file (std::fopen (path.c_str (), "rb"), &std::fclose);
         if (!file)
           PCL_TENSOR_THROW (pcl::IOException, "cannot open '" << path << "': " << std::strerror (errno));
-        std::string data;
         char buffer[1 << 16];
         std::size_t n;
         while ((n = std::fread (buffer, 1, sizeof (buffer), file.get ())) > 0)
-          data.append (buffer, n);
+          sink (buffer, n);
         if (std::ferror (file.get ()))
           PCL_TENSOR_THROW (pcl::IOException, "cannot read '" << path << "': " << std::strerror (errno));
+      }
+
+      /** \brief The whole content of \a path (readFileBlocks()). */
+      inline std::string
+      readFile (const std::string& path)
+      {
+        std::string data;
+        readFileBlocks (path, [&data] (const char* bytes, std::size_t n) { data.append (bytes, n); });
         return data;
       }
 

@@ -87,10 +87,12 @@ namespace pcl
       j["file"] = v.name;
       j["status"] = statusOf (v.registered);
       j["reference"] = v.reference;
+      j["component"] = v.component;
       j["pose"] = toJson (Eigen::Matrix4d (v.pose.matrix ()));
       j["hypotheses_tried"] = v.pairwise.hypotheses_tried;
       j["references_tried"] = v.references_tried;
       j["globally_refused"] = v.globally_refused;
+      j["timings_ms"] = {{"meshing", v.prepare_ms}, {"tensors", v.tensors_ms}, {"pairwise", v.pairwise_ms}};
       if (!v.error.empty ())
         j["error"] = v.error;
       return j;
@@ -106,12 +108,20 @@ namespace pcl
       j["views"] = std::move (views);
       j["registered"] = r.registeredCount ();
       j["reference"] = r.reference;
+      j["components"] = r.components;
       j["resolution"] = r.resolution;
       j["dimensions"] = {r.dimensions.D[0], r.dimensions.D[1], r.dimensions.D[2]};
       j["global"] = {{"iterations", r.global.iterations}, {"pairs", r.global.pairs},
                      {"rms_before", r.global.rms_before}, {"rms_after", r.global.rms_after}};
+      JsonReport attempts = JsonReport::array ();
+      for (const auto& a : r.attempts)
+        attempts.push_back ({{"views", {a.first, a.second}}, {"score", a.score}, {"registered", a.registered},
+                             {"joined", a.joined}, {"full", a.full}, {"excess", a.excess}, {"ms", a.ms}});
+      j["candidate_pairs"] = r.candidates.size ();
+      j["pairs_registered"] = std::move (attempts);
+      j["joins"] = r.joins;
       j["timings_ms"] = {{"meshing", r.timings.prepare_ms}, {"tensors", r.timings.tensors_ms},
-                         {"pairwise", r.timings.pairwise_ms}, {"global", r.timings.global_ms},
+                         {"ranking", r.timings.ranking_ms}, {"pairwise", r.timings.pairwise_ms}, {"global", r.timings.global_ms},
                          {"registration", r.timings.total_ms}};
       return j;
     }

@@ -4,20 +4,47 @@
 #include <pcl/registration/global_verification.h>
 #include <pcl/common/tensor_exceptions.h>
 
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <functional>
+#include <limits>
+
 namespace pcl
 {
   namespace registration
   {
     namespace
     {
-      void
-      appendTransformed (const pcl::PointCloud<pcl::PointNormal>& cloud, const Eigen::Affine3d& pose,
-                         std::vector<Eigen::Vector3d>& points)
+      /** Running lowest and highest projections of points along three axes. */
+      struct Span
       {
-        points.reserve (points.size () + cloud.size ());
-        for (const auto& p : cloud)
-          points.push_back (pose * p.getVector3fMap ().cast<double> ());
-      }
+        Eigen::Vector3d low = Eigen::Vector3d::Constant (std::numeric_limits<double>::infinity ());
+        Eigen::Vector3d high = -Eigen::Vector3d::Constant (std::numeric_limits<double>::infinity ());
+
+        /** Widen by \a points mapped by q = linear * p + offset. */
+        void
+        add (const std::vector<Eigen::Vector3d>& points, const Eigen::Matrix3d& linear, const Eigen::Vector3d& offset)
+        {
+          for (const auto& p : points)
+          {
+            const Eigen::Vector3d q = linear * p + offset;
+            low = low.cwiseMin (q);
+            high = high.cwiseMax (q);
+          }
+        }
+
+        /** Extents sorted from largest to smallest (zero when empty). */
+        Eigen::Vector3d
+        extents () const
+        {
+          Eigen::Vector3d e = (high - low).cwiseMax (0.0);
+          if (!e.allFinite ())
+            e.setZero ();
+          std::sort (e.data (), e.data () + 3, std::greater<> ());
+          return e;
+        }
+      };
     }
 
     GlobalVerification::GlobalVerification (const ObjectDimensions& dims, double resolution, const GlobalVerificationParams& params)
@@ -27,21 +54,151 @@ namespace pcl
         PCL_TENSOR_THROW (BadArgumentException, "global verification needs a positive resolution and a non-negative tolerance");
     }
 
-    void
-    GlobalVerification::addView (const pcl::PointCloud<pcl::PointNormal>& cloud, const Eigen::Affine3d& pose)
+    GlobalVerification
+    GlobalVerification::single (const pcl::PointCloud<pcl::PointNormal>& cloud) const
     {
-      view_starts_.push_back (points_.size ());
-      appendTransformed (cloud, pose, points_);
+      GlobalVerification view (dims_, resolution_, params_);
+      view.points_.reserve (cloud.size ());
+      for (const auto& p : cloud)
+        if (p.getVector3fMap ().allFinite ())
+          view.points_.push_back (p.getVector3fMap ().cast<double> ());
+      Moments& m = view.moments_;
+      m.count = static_cast<double> (view.points_.size ());
+      Frame frame;
+      if (!view.points_.empty ())
+      {
+        view.anchor_ = view.points_.front ();
+        view.anchored_ = true;
+        // Two passes, centroid first, so that the scatter does not lose digits to large coordinates.
+        for (const auto& p : view.points_)
+          m.mean += p;
+        m.mean /= m.count;
+        for (const auto& p : view.points_)
+          m.scatter.noalias () += (p - m.mean) * (p - m.mean).transpose ();
+      }
+      if (view.points_.size () >= 3)
+      {
+        frame.valid = true;
+        frame.axes = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> (m.scatter).eigenvectors ();
+        Span span;
+        span.add (view.points_, frame.axes.transpose (), -frame.axes.transpose () * view.anchor_);
+        frame.low = span.low;
+        frame.high = span.high;
+      }
+      view.frames_.push_back (frame);
+      return view;
+    }
+
+    Eigen::Vector3d
+    GlobalVerification::unionExtents (const GlobalVerification& other, const Eigen::Affine3d& pose, const Eigen::Matrix3d& axes) const
+    {
+      const Eigen::Vector3d anchor = anchored_ ? anchor_ : pose * other.anchor_;
+      Span span;
+      span.add (points_, axes.transpose (), -axes.transpose () * anchor);
+      span.add (other.points_, axes.transpose () * pose.linear (), axes.transpose () * (pose.translation () - anchor));
+      return span.extents ();
+    }
+
+    GlobalVerification::Frame
+    GlobalVerification::movedFrame (const Frame& frame, const GlobalVerification& other, const Eigen::Affine3d& pose) const
+    {
+      // a' = R a; a'^T (R p + t - anchor) = a^T (p - other.anchor) + a^T other.anchor + a'^T (t - anchor).
+      const Eigen::Vector3d anchor = anchored_ ? anchor_ : pose * other.anchor_;
+      Frame moved = frame;
+      moved.axes = pose.linear () * frame.axes;
+      const Eigen::Vector3d shift = frame.axes.transpose () * other.anchor_ + moved.axes.transpose () * (pose.translation () - anchor);
+      moved.low += shift;
+      moved.high += shift;
+      return moved;
+    }
+
+    double
+    GlobalVerification::excess (const GlobalVerification& other, const Eigen::Affine3d& pose) const
+    {
+      // The union's moments: the other group's moved, then combined (Chan et al.'s pairwise update).
+      const double n_a = moments_.count, n_b = other.moments_.count, n = n_a + n_b;
+      if (n < 3.0)
+        PCL_TENSOR_THROW (InvalidScanException, "principal axes need at least 3 finite points, got " << n);
+      const Eigen::Matrix3d& r = pose.linear ();
+      const Eigen::Vector3d delta = pose * other.moments_.mean - moments_.mean;
+      const Eigen::Matrix3d scatter = moments_.scatter + r * other.moments_.scatter * r.transpose () +
+                                      delta * delta.transpose () * (n_a * n_b / n);
+      const Eigen::Matrix3d axes = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> (scatter).eigenvectors ();
+      const int checked = params_.checked_dimensions;
+      double excess = dimensionExcess (unionExtents (other, pose, axes), dims_, checked);
+
+      // Each view's own frame: its extents so far, widened by the points of the other group.
+      const Eigen::Vector3d anchor = anchored_ ? anchor_ : pose * other.anchor_;
+      for (const Frame& f : frames_)
+        if (f.valid)
+        {
+          Span span{f.low, f.high};
+          span.add (other.points_, f.axes.transpose () * r, f.axes.transpose () * (pose.translation () - anchor));
+          excess = std::min (excess, dimensionExcess (span.extents (), dims_, checked));
+        }
+      for (const Frame& g : other.frames_)
+        if (g.valid)
+        {
+          const Frame moved = movedFrame (g, other, pose);
+          Span span{moved.low, moved.high};
+          span.add (points_, moved.axes.transpose (), -moved.axes.transpose () * anchor);
+          excess = std::min (excess, dimensionExcess (span.extents (), dims_, checked));
+        }
+      return excess / resolution_;
     }
 
     double
     GlobalVerification::excess (const pcl::PointCloud<pcl::PointNormal>& cloud, const Eigen::Affine3d& pose) const
     {
-      std::vector<Eigen::Vector3d> points = points_;
-      std::vector<std::size_t> view_starts = view_starts_;
-      view_starts.push_back (points.size ());
-      appendTransformed (cloud, pose, points);
-      return registeredDimensionExcess (points, view_starts, dims_, params_.checked_dimensions) / resolution_;
+      return excess (single (cloud), pose);
+    }
+
+    void
+    GlobalVerification::merge (const GlobalVerification& other, const Eigen::Affine3d& pose)
+    {
+      if (!anchored_ && other.anchored_)
+      {
+        anchor_ = pose * other.anchor_;
+        anchored_ = true;
+      }
+      const Eigen::Matrix3d& r = pose.linear ();
+      for (Frame& f : frames_)
+        if (f.valid)
+        {
+          Span span{f.low, f.high};
+          span.add (other.points_, f.axes.transpose () * r, f.axes.transpose () * (pose.translation () - anchor_));
+          f.low = span.low;
+          f.high = span.high;
+        }
+      for (const Frame& g : other.frames_)
+      {
+        Frame moved = g.valid ? movedFrame (g, other, pose) : g;
+        if (moved.valid)
+        {
+          Span span{moved.low, moved.high};
+          span.add (points_, moved.axes.transpose (), -moved.axes.transpose () * anchor_);
+          moved.low = span.low;
+          moved.high = span.high;
+        }
+        frames_.push_back (moved);
+      }
+      const double n_a = moments_.count, n_b = other.moments_.count, n = n_a + n_b;
+      if (n_b > 0.0)
+      {
+        const Eigen::Vector3d delta = pose * other.moments_.mean - moments_.mean;
+        moments_.scatter += r * other.moments_.scatter * r.transpose () + delta * delta.transpose () * (n_a * n_b / n);
+        moments_.mean += delta * (n_b / n);
+        moments_.count = n;
+      }
+      points_.reserve (points_.size () + other.points_.size ());
+      for (const auto& p : other.points_)
+        points_.push_back (pose * p);
+    }
+
+    void
+    GlobalVerification::addView (const pcl::PointCloud<pcl::PointNormal>& cloud, const Eigen::Affine3d& pose)
+    {
+      merge (single (cloud), pose);
     }
   }
 }

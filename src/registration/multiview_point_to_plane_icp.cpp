@@ -4,6 +4,7 @@
 #include <pcl/registration/multiview_point_to_plane_icp.h>
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/search/bounded_nearest_search.h>
+#include "../common/parallel_for.h"
 
 #include <Eigen/Cholesky>
 
@@ -57,23 +58,30 @@ namespace pcl
         return v;
       }
 
-      /** The normal equations of all poses together, over the unknowns of the moving views. */
-      struct JointSystem
+      using Matrix12d = Eigen::Matrix<double, 12, 12>;
+      using Vector12d = Eigen::Matrix<double, 12, 1>;
+
+      /** The normal equations of one pair of views, both directions, over both views' small motions
+        * (first view's six unknowns, then the second's). Pairs are independent, so each is built on
+        * its own thread and added to the joint system in pair order: the same sums at any thread count. */
+      struct PairSystem
       {
-        Eigen::MatrixXd h;
-        Eigen::VectorXd g;
+        Matrix12d h = Matrix12d::Zero ();
+        Vector12d g = Vector12d::Zero ();
         std::size_t pairs = 0;
         double sum2 = 0.0;
       };
 
       /** Pairs sampled points of view \a a with their nearest partners on view \a b and adds their
-        * linearised point-to-plane distances. Poses are about the centre (see multiviewPointToPlaneIcp). */
+        * linearised point-to-plane distances; \a a_first: a's unknowns are the first six of \a system.
+        * Poses are about the centre (see multiviewPointToPlaneIcp). */
       void
       addPairTerms (const IcpView& a, const IcpView& b, const Eigen::Affine3d& pose_a, const Eigen::Affine3d& pose_b,
-                    int var_a, int var_b, double max_distance, double min_cos, JointSystem& system)
+                    bool a_first, double max_distance, double min_cos, PairSystem& system)
       {
         const Eigen::Affine3d a_to_b = pose_b.inverse () * pose_a;
         const float radius = static_cast<float> (max_distance);
+        const int offset_a = a_first ? 0 : 6, offset_b = a_first ? 6 : 0;
         float d2;
         for (const int s : a.sample)
         {
@@ -90,24 +98,44 @@ namespace pcl
           const Eigen::Vector3d y = pose_b * q.getVector3fMap ().cast<double> ();
           const double r = n.dot (x - y);
           // d r / d (rotation, translation) of a small motion of each view, applied in the common frame.
-          Vector6d ja, jb;
-          ja << x.cross (n), n;
-          jb << -y.cross (n), -n;
-          const int vars[2] = {var_a, var_b};
-          const Vector6d* js[2] = {&ja, &jb};
-          for (int u = 0; u < 2; ++u)
-          {
-            if (vars[u] < 0)
-              continue;
-            system.g.segment<6> (6 * vars[u]) -= *js[u] * r;
-            for (int w = 0; w < 2; ++w)
-              if (vars[w] >= 0)
-                system.h.block<6, 6> (6 * vars[u], 6 * vars[w]).noalias () += *js[u] * js[w]->transpose ();
-          }
+          Vector12d j;
+          j.segment<3> (offset_a) = x.cross (n);
+          j.segment<3> (offset_a + 3) = n;
+          j.segment<3> (offset_b) = -y.cross (n);
+          j.segment<3> (offset_b + 3) = -n;
+          system.g.noalias () -= j * r;
+          system.h.noalias () += j * j.transpose ();
           system.sum2 += r * r;
           ++system.pairs;
         }
       }
+
+      /** The normal equations of all poses together, over the unknowns of the moving views. */
+      struct JointSystem
+      {
+        Eigen::MatrixXd h;
+        Eigen::VectorXd g;
+        std::size_t pairs = 0;
+        double sum2 = 0.0;
+
+        /** Add one pair's equations; a view without unknowns (the fixed one, var < 0) drops out. */
+        void
+        add (const PairSystem& pair, int var_a, int var_b)
+        {
+          const int vars[2] = {var_a, var_b};
+          for (int u = 0; u < 2; ++u)
+          {
+            if (vars[u] < 0)
+              continue;
+            g.segment<6> (6 * vars[u]) += pair.g.segment<6> (6 * u);
+            for (int w = 0; w < 2; ++w)
+              if (vars[w] >= 0)
+                h.block<6, 6> (6 * vars[u], 6 * vars[w]) += pair.h.block<6, 6> (6 * u, 6 * w);
+          }
+          sum2 += pair.sum2;
+          pairs += pair.pairs;
+        }
+      };
 
       Eigen::Affine3d
       smallMotion (const Vector6d& x)
@@ -141,7 +169,7 @@ namespace pcl
     MultiviewIcpResult
     multiviewPointToPlaneIcp (const std::vector<const ScanMesh*>& views, const ViewPoses& initial, const ViewPairs& pairs,
                               int fixed, double resolution, const MultiviewIcpParams& params,
-                              const MultiviewIcpProgress& progress)
+                              const MultiviewIcpProgress& progress, unsigned threads)
     {
       const int n = static_cast<int> (views.size ());
       if (initial.size () != views.size () || fixed < 0 || fixed >= n)
@@ -163,9 +191,10 @@ namespace pcl
           var[i] = unknowns++;
 
       std::vector<IcpView> icp_views (n);
-      for (int i = 0; i < n; ++i)
+      pcl::detail::parallelFor (static_cast<std::size_t> (n), threads, [&] (std::size_t i) {
         if (in_pair[i])
           icp_views[i] = makeIcpView (*views[i], params.skip_boundary, params.sample_points, params.max_distance * resolution);
+      });
 
       MultiviewIcpResult result;
       result.poses = initial;
@@ -182,12 +211,14 @@ namespace pcl
         JointSystem system;
         system.h = Eigen::MatrixXd::Zero (6 * unknowns, 6 * unknowns);
         system.g = Eigen::VectorXd::Zero (6 * unknowns);
-        for (const auto& p : pairs)
-        {
-          const int i = p.first, j = p.second;
-          addPairTerms (icp_views[i], icp_views[j], centred[i], centred[j], var[i], var[j], max_distance, min_cos, system);
-          addPairTerms (icp_views[j], icp_views[i], centred[j], centred[i], var[j], var[i], max_distance, min_cos, system);
-        }
+        std::vector<PairSystem> pair_systems (pairs.size ());
+        pcl::detail::parallelFor (pairs.size (), threads, [&] (std::size_t k) {
+          const int i = pairs[k].first, j = pairs[k].second;
+          addPairTerms (icp_views[i], icp_views[j], centred[i], centred[j], true, max_distance, min_cos, pair_systems[k]);
+          addPairTerms (icp_views[j], icp_views[i], centred[j], centred[i], false, max_distance, min_cos, pair_systems[k]);
+        });
+        for (std::size_t k = 0; k < pairs.size (); ++k)
+          system.add (pair_systems[k], var[pairs[k].first], var[pairs[k].second]);
         if (system.pairs == 0)
           break;
         const double rms = std::sqrt (system.sum2 / static_cast<double> (system.pairs));
@@ -222,22 +253,25 @@ namespace pcl
 
     ViewPairs
     findOverlappingViews (const std::vector<const ScanMesh*>& views, const ViewPoses& poses, const std::vector<bool>& use,
-                          double resolution, double max_distance, double min_fraction, int sample_points)
+                          double resolution, double max_distance, double min_fraction, int sample_points, unsigned threads)
     {
       const int n = static_cast<int> (views.size ());
       if (poses.size () != views.size () || (!use.empty () && use.size () != views.size ()))
         PCL_TENSOR_THROW (BadArgumentException, "findOverlappingViews needs one pose (and one flag) per view");
       std::vector<IcpView> icp_views (n);
-      for (int i = 0; i < n; ++i)
+      pcl::detail::parallelFor (static_cast<std::size_t> (n), threads, [&] (std::size_t i) {
         if (views[i] && (use.empty () || use[i]))
           icp_views[i] = makeIcpView (*views[i], false, sample_points, max_distance * resolution);
+      });
       const float radius = static_cast<float> (max_distance * resolution);
-      ViewPairs pairs;
+      ViewPairs candidates;
       for (int i = 0; i < n; ++i)
         for (int j = i + 1; j < n; ++j)
-        {
-          if (!icp_views[i].mesh || !icp_views[j].mesh)
-            continue;
+          if (icp_views[i].mesh && icp_views[j].mesh)
+            candidates.emplace_back (i, j);
+      std::vector<char> overlapping (candidates.size (), 0);
+      pcl::detail::parallelFor (candidates.size (), threads, [&] (std::size_t k) {
+          const int i = candidates[k].first, j = candidates[k].second;
           // The smaller view's sample against the larger view.
           const bool i_smaller = views[i]->cloud->size () <= views[j]->cloud->size ();
           const IcpView& a = icp_views[i_smaller ? i : j];
@@ -249,9 +283,12 @@ namespace pcl
             const Eigen::Vector3f query = (a_to_b * (*a.mesh->cloud)[s].getVector3fMap ().cast<double> ()).cast<float> ();
             near += b.search->anyWithin (query, radius) ? 1 : 0;
           }
-          if (!a.sample.empty () && static_cast<double> (near) >= min_fraction * static_cast<double> (a.sample.size ()))
-            pairs.emplace_back (i, j);
-        }
+          overlapping[k] = !a.sample.empty () && static_cast<double> (near) >= min_fraction * static_cast<double> (a.sample.size ());
+      });
+      ViewPairs pairs;
+      for (std::size_t k = 0; k < candidates.size (); ++k)
+        if (overlapping[k])
+          pairs.push_back (candidates[k]);
       return pairs;
     }
   }

@@ -3,6 +3,7 @@
  */
 #include <pcl/registration/multiview_tensor_registration.h>
 #include "../common/parallel_for.h"
+#include "ranked_view_registration.h"
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/common/time.h>
 
@@ -69,23 +70,38 @@ namespace pcl
       if (!d.allFinite () || (d.array () < 0.0).any () || (!d.isZero () && !(d.array () > 0.0).all ()))
         PCL_TENSOR_THROW (BadArgumentException, "object dimensions must be three positive numbers, or all zero (from "
                           "the views), got " << d.transpose ());
-      if (params.max_references < 0)
-        PCL_TENSOR_THROW (BadArgumentException, "max_references must be 0 (all) or positive, got " << params.max_references);
+      if (params.max_references < 0 || params.max_failed_pairs < 0 || params.ranking.sample_tensors < 0 ||
+          params.first_pass_hypotheses < 0 || params.second_pass_pairs < 0)
+        PCL_TENSOR_THROW (BadArgumentException, "max_references, max_failed_pairs, the ranking's sample, first_pass_hypotheses and second_pass_pairs "
+                          "must be 0 (no limit) or positive, got " << params.max_references << ", " << params.max_failed_pairs
+                          << ", " << params.ranking.sample_tensors << ", " << params.first_pass_hypotheses << " and "
+                          << params.second_pass_pairs);
       if (!(params.min_overlap >= 0.0 && params.min_overlap <= 1.0))
         PCL_TENSOR_THROW (BadArgumentException, "min_overlap must lie in [0, 1], got " << params.min_overlap);
       checkGlobalStepParams (params.global);
     }
 
+    namespace
+    {
+      /** A view's meshes' frame -> its own frame: a view prepared centred (prepareTensorView, a cache)
+        * carries its origin; one meshed here has none. */
+      Eigen::Affine3d
+      meshToView (const ViewRegistrationStatus& v)
+      {
+        return Eigen::Affine3d (Eigen::Translation3d (v.view ? v.view->origin : Eigen::Vector3d::Zero ()));
+      }
+    }
+
     std::vector<pcl::IntegrationView>
-    registeredIntegrationViews (const MultiviewRegistrationResult& result)
+    registeredIntegrationViews (const MultiviewRegistrationResult& result, int component)
     {
       std::vector<pcl::IntegrationView> views;
       for (const auto& v : result.views)
-        if (v.registered && v.prepared)
+        if (v.registered && v.prepared && v.component == component)
         {
           pcl::IntegrationView r;
           r.mesh = pcl::ScanMesh::ConstPtr (v.prepared, &v.prepared->fine);
-          r.pose = v.pose;
+          r.pose = v.pose * meshToView (v);
           views.push_back (r);
         }
       return views;
@@ -136,10 +152,13 @@ namespace pcl
           pcl::StopWatch watch;
           try
           {
-            if (!inputs[i].cloud)
+            if (inputs[i].view)
+              view.prepared = inputs[i].view->scan;
+            else if (!inputs[i].cloud)
               PCL_TENSOR_THROW (InvalidScanException, "the view has no cloud");
-            view.prepared = std::make_shared<const PreparedScan> (
-                prepareScan (*inputs[i].cloud, inputs[i].viewpoint, params.pairwise.preparation));
+            else
+              view.prepared = std::make_shared<const PreparedScan> (
+                  prepareScan (*inputs[i].cloud, inputs[i].viewpoint, params.pairwise.preparation));
           }
           catch (const InvalidScanException& e)
           {
@@ -177,8 +196,8 @@ namespace pcl
       /** Stage 2: each usable view's tensors, once, on \a threads threads: the views every
         * registration takes (TensorView). */
       Views
-      computeTensors (const MultiviewRegistrationParams& params, const MultiviewProgress& progress, unsigned threads,
-                      MultiviewRegistrationResult& result)
+      computeTensors (const std::vector<MultiviewInput>& inputs, const MultiviewRegistrationParams& params,
+                      const MultiviewProgress& progress, unsigned threads, MultiviewRegistrationResult& result)
       {
         Views tensors (result.views.size ());
         StageProgress stage (progress, MultiviewStage::TENSORS, result.views.size ());
@@ -189,9 +208,16 @@ namespace pcl
             pcl::StopWatch watch;
             try
             {
-              TensorView prepared;
-              prepared.scan = view.prepared;
-              tensors[i] = withTensors (prepared, result.dimensions, params.pairwise);
+              const TensorView::ConstPtr& given = inputs[i].view;
+              if (given && given->tensors && given->dimensions.D == result.dimensions.D)
+                tensors[i] = given;
+              else
+              {
+                TensorView prepared = given ? *given : TensorView ();
+                prepared.scan = view.prepared;
+                tensors[i] = withTensors (prepared, result.dimensions, params.pairwise);
+              }
+              view.view = tensors[i];
             }
             catch (const InvalidScanException& e)
             {
@@ -208,10 +234,9 @@ namespace pcl
       class OrderedRegistration
       {
         public:
-          OrderedRegistration (const MultiviewRegistrationParams& params, const ViewPairs& pairs,
-                               const std::vector<MultiviewInput>& inputs, const Views& tensors, unsigned threads,
+          OrderedRegistration (const MultiviewRegistrationParams& params, const ViewPairs& pairs, const Views& tensors, unsigned threads,
                                MultiviewRegistrationResult& result)
-            : params_ (params), pairs_ (pairs), inputs_ (inputs), tensors_ (tensors), threads_ (threads), result_ (result),
+            : params_ (params), pairs_ (pairs), tensors_ (tensors), threads_ (threads), result_ (result),
               verification_ (result.dimensions, result.resolution, params.global_verification)
           {}
 
@@ -268,21 +293,11 @@ namespace pcl
             return refs;
           }
 
-          /** One pair through TensorRegistration, on the views prepared once, with global verification. */
+          /** One pair on the views prepared once, with global verification. */
           TensorRegistrationReport
           registerPair (int reference, int view, const HypothesisAcceptor& global) const
           {
-            TensorRegistration<pcl::PointXYZ> registration;
-            registration.setParams (params_.pairwise);
-            registration.setObjectDimensions (result_.dimensions);
-            registration.setInputTarget (inputs_[reference].cloud);
-            registration.setInputSource (inputs_[view].cloud);
-            registration.setTargetView (tensors_[reference]);
-            registration.setSourceView (tensors_[view]);
-            registration.setHypothesisAcceptor (global);
-            pcl::PointCloud<pcl::PointXYZ> aligned;
-            registration.align (aligned);
-            return registration.getReport ();
+            return registerTensorViews (tensors_[reference], tensors_[view], result_.dimensions, params_.pairwise, global);
           }
 
           /** One reference tried for one view: the pair's report and the last global excess seen. */
@@ -298,9 +313,10 @@ namespace pcl
             Attempt a;
             const Eigen::Affine3d ref_pose = result_.views[reference].pairwise_pose;
             const auto& scene = *result_.views[view].prepared->fine.cloud;
+            const Eigen::Affine3d to_view = meshToView (result_.views[view]);
             const HypothesisAcceptor global = [&] (const TensorVerificationResult& local) {
               const Eigen::Affine3d pose = ref_pose * Eigen::Affine3d (local.transform.cast<double> ());
-              a.excess = verification_.excess (scene, pose);
+              a.excess = verification_.excess (scene, pose * to_view);
               return a.excess <= params_.global_verification.tolerance;
             };
             a.pair = registerPair (reference, view, global);
@@ -363,13 +379,12 @@ namespace pcl
             status.registered = true;
             status.reference = reference;
             status.pairwise_pose = status.pose = pose;
-            verification_.addView (*status.prepared->fine.cloud, pose);
+            verification_.addView (*status.prepared->fine.cloud, pose * meshToView (status));
             registered_.push_back (view);
           }
 
           const MultiviewRegistrationParams& params_;
           const ViewPairs& pairs_;
-          const std::vector<MultiviewInput>& inputs_;
           const Views& tensors_;
           const unsigned threads_;
           MultiviewRegistrationResult& result_;
@@ -378,65 +393,104 @@ namespace pcl
           std::set<std::pair<int, int>> tried_;  ///< (reference, view) pairs already tried
       };
 
-      /** The pairs of the global step: registration's own, the loop, given pairs, found overlaps. */
+      /** The pairs of the global step within one component: registration's own, the loop, given
+        * pairs, found overlaps. */
       ViewPairs
       globalPairs (const MultiviewRegistrationParams& params, const ViewPairs& given, const std::vector<const ScanMesh*>& meshes,
-                   const ViewPoses& poses, const MultiviewRegistrationResult& result)
+                   const ViewPoses& poses, const MultiviewRegistrationResult& result, int component, unsigned threads)
       {
         std::set<std::pair<int, int>> pairs;
+        std::vector<bool> member (result.views.size ());
+        for (std::size_t i = 0; i < result.views.size (); ++i)
+          member[i] = result.views[i].registered && result.views[i].component == component;
         const auto add = [&] (int a, int b) {
-          if (a >= 0 && b >= 0 && a != b && result.views[a].registered && result.views[b].registered)
+          if (a >= 0 && b >= 0 && a != b && member[a] && member[b])
             pairs.insert ({std::min (a, b), std::max (a, b)});
         };
-        std::vector<bool> registered (result.views.size ());
         int first = -1, last = -1;
         for (std::size_t i = 0; i < result.views.size (); ++i)
-        {
-          registered[i] = result.views[i].registered;
-          add (static_cast<int> (i), result.views[i].reference);
-          if (registered[i])
+          if (member[i])
             (first < 0 ? first : last) = static_cast<int> (i);
-        }
+        for (const auto& p : result.joins)
+          add (p.first, p.second);
         if (params.loop)
           add (first, last);
         for (const auto& p : given)
           add (p.first, p.second);
         if (params.min_overlap > 0.0)
-          for (const auto& p : findOverlappingViews (meshes, poses, registered, result.resolution, params.global.max_distance,
-                                                     params.min_overlap))
+          for (const auto& p : findOverlappingViews (meshes, poses, member, result.resolution, params.global.max_distance,
+                                                     params.min_overlap, 500, threads))
             add (p.first, p.second);
         return ViewPairs (pairs.begin (), pairs.end ());
       }
 
-      /** Stage 4: all registered views moved together (Section 5, module 5 of Fig. 9). */
+      /** The view whose frame is the component's: the one registered to no other. */
+      int
+      componentReference (const MultiviewRegistrationResult& result, int component)
+      {
+        for (std::size_t i = 0; i < result.views.size (); ++i)
+          if (result.views[i].registered && result.views[i].component == component && result.views[i].reference < 0)
+            return static_cast<int> (i);
+        return -1;
+      }
+
+      /** Stage 4: the registered views of each component moved together (Section 5, module 5 of Fig. 9);
+        * the result's global step is component 0's. */
       void
       registerGlobally (const MultiviewRegistrationParams& params, const ViewPairs& given, const MultiviewProgress& progress,
-                        MultiviewRegistrationResult& result)
+                        unsigned threads, MultiviewRegistrationResult& result)
       {
-        std::vector<const ScanMesh*> meshes (result.views.size (), nullptr);
-        ViewPoses poses (result.views.size (), Eigen::Affine3d::Identity ());
+        const std::size_t steps = static_cast<std::size_t> (std::max (params.global.max_iterations, 1));
+        for (int c = 0; c < result.components; ++c)
+        {
+          std::vector<const ScanMesh*> meshes (result.views.size (), nullptr);
+          ViewPoses poses (result.views.size (), Eigen::Affine3d::Identity ());
+          for (std::size_t i = 0; i < result.views.size (); ++i)
+            if (result.views[i].registered && result.views[i].component == c)
+            {
+              meshes[i] = &result.views[i].prepared->fine;
+              poses[i] = result.views[i].pairwise_pose * meshToView (result.views[i]);
+            }
+          const ViewPairs pairs = globalPairs (params, given, meshes, poses, result, c, threads);
+          result.pairs.insert (result.pairs.end (), pairs.begin (), pairs.end ());
+          if (pairs.empty ())
+            continue;
+          const MultiviewIcpProgress icp_progress = [&] (int it, int max_it) {
+            if (c == 0)
+              report (progress, MultiviewStage::GLOBAL, static_cast<std::size_t> (it), static_cast<std::size_t> (max_it));
+          };
+          MultiviewIcpResult global = multiviewPointToPlaneIcp (meshes, poses, pairs, componentReference (result, c),
+                                                                 result.resolution, params.global, icp_progress, threads);
+          for (std::size_t i = 0; i < result.views.size (); ++i)
+            if (result.views[i].registered && result.views[i].component == c)
+              result.views[i].pose = global.poses[i] * meshToView (result.views[i]).inverse ();
+          if (c == 0)
+            result.global = std::move (global);
+        }
+        std::sort (result.pairs.begin (), result.pairs.end ());
+        report (progress, MultiviewStage::GLOBAL, steps, steps);  // done, also when it converged early
+      }
+
+      /** ORDERED: one component of every registered view, joined as registration went. */
+      void
+      orderedComponents (MultiviewRegistrationResult& result)
+      {
         for (std::size_t i = 0; i < result.views.size (); ++i)
           if (result.views[i].registered)
           {
-            meshes[i] = &result.views[i].prepared->fine;
-            poses[i] = result.views[i].pairwise_pose;
+            result.views[i].component = 0;
+            result.components = 1;
+            if (result.views[i].reference >= 0)
+              result.joins.emplace_back (std::min<int> (i, result.views[i].reference), std::max<int> (i, result.views[i].reference));
           }
-        result.pairs = globalPairs (params, given, meshes, poses, result);
-        const std::size_t steps = static_cast<std::size_t> (std::max (params.global.max_iterations, 1));
-        if (result.pairs.empty ())
-        {
-          report (progress, MultiviewStage::GLOBAL, steps, steps);
-          return;
-        }
-        const MultiviewIcpProgress icp_progress = [&] (int it, int max_it) {
-          report (progress, MultiviewStage::GLOBAL, static_cast<std::size_t> (it), static_cast<std::size_t> (max_it));
-        };
-        result.global = multiviewPointToPlaneIcp (meshes, poses, result.pairs, result.reference, result.resolution,
-                                                  params.global, icp_progress);
-        for (std::size_t i = 0; i < result.views.size (); ++i)
-          if (result.views[i].registered)
-            result.views[i].pose = result.global.poses[i];
-        report (progress, MultiviewStage::GLOBAL, steps, steps);  // done, also when it converged early
+      }
+
+      void
+      checkInputs (const std::vector<MultiviewInput>& views)
+      {
+        for (const auto& v : views)
+          if (v.view && !v.view->scan)
+            PCL_TENSOR_THROW (BadArgumentException, "view " << v.name << " is given prepared without meshes");
       }
 
       void
@@ -454,6 +508,7 @@ namespace pcl
     MultiviewTensorRegistration::compute (const std::vector<MultiviewInput>& views) const
     {
       checkPairs (pairs_, views.size ());
+      checkInputs (views);
       pcl::StopWatch total, watch;
       MultiviewRegistrationResult result;
       result.views.resize (views.size ());
@@ -464,16 +519,27 @@ namespace pcl
         return result;  // no usable view: none is registered, each says why
 
       watch.reset ();
-      const Views tensors = computeTensors (params_, progress_, threads_, result);
+      const Views tensors = computeTensors (views, params_, progress_, threads_, result);
       result.timings.tensors_ms = watch.getTime ();
 
       watch.reset ();
-      OrderedRegistration (params_, pairs_, views, tensors, threads_, result).run (progress_);
+      if (params_.search == ViewSearch::ORDERED)
+      {
+        OrderedRegistration (params_, pairs_, tensors, threads_, result).run (progress_);
+        orderedComponents (result);
+      }
+      else
+      {
+        const ViewPairRegistration registration = pair_registration_ ? pair_registration_ :
+            [] (int, int, const TensorView::ConstPtr& model, const TensorView::ConstPtr& scene, const ObjectDimensions& dims,
+                const TensorRegistrationParams& params) { return registerTensorViews (model, scene, dims, params); };
+        detail::registerRankedViews (params_, pairs_, tensors, registration, threads_, progress_, result);
+      }
       result.timings.pairwise_ms = watch.getTime ();
 
       watch.reset ();
       if (params_.global_registration)
-        registerGlobally (params_, pairs_, progress_, result);
+        registerGlobally (params_, pairs_, progress_, threads_, result);
       result.timings.global_ms = watch.getTime ();
       result.timings.total_ms = total.getTime ();
       return result;

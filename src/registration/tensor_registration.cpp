@@ -57,6 +57,18 @@ namespace pcl
         return report;
       }
     }
+
+    TensorRegistrationReport
+    registerTensorViews (const TensorView::ConstPtr& model, const TensorView::ConstPtr& scene, const ObjectDimensions& dims,
+                         const TensorRegistrationParams& params, const HypothesisAcceptor& accept)
+    {
+      if (!model || !scene)
+        PCL_TENSOR_THROW (BadArgumentException, "registerTensorViews needs two views");
+      detail::RegistrationSide model_side, scene_side;
+      model_side.view = model;
+      scene_side.view = scene;
+      return detail::registerViewPair (model_side, scene_side, &dims, params, accept, nullptr, 1);
+    }
   }
 }
 

@@ -46,9 +46,17 @@ namespace pcl
         /** \brief Add a registered view: its points under \a pose (view -> common frame). */
         void addView (const pcl::PointCloud<pcl::PointNormal>& cloud, const Eigen::Affine3d& pose);
 
+        /** \brief Add every view of \a other, moved by \a pose (other's common frame -> this one): two
+          * groups of registered views joined by one pairwise registration. Both must share D and d_res. */
+        void merge (const GlobalVerification& other, const Eigen::Affine3d& pose);
+
         /** \brief max(D_L - D) in d_res, with the view under \a pose added to the registered ones.
           * \throw InvalidScanException when fewer than three finite points are given in all */
         double excess (const pcl::PointCloud<pcl::PointNormal>& cloud, const Eigen::Affine3d& pose) const;
+
+        /** \brief max(D_L - D) in d_res, with every view of \a other, moved by \a pose, added.
+          * \throw InvalidScanException when fewer than three finite points are given in all */
+        double excess (const GlobalVerification& other, const Eigen::Affine3d& pose) const;
 
         /** \brief excess() <= tolerance. */
         bool accepts (const pcl::PointCloud<pcl::PointNormal>& cloud, const Eigen::Affine3d& pose) const
@@ -59,13 +67,51 @@ namespace pcl
         /** \brief Points of the registered views so far, in the common frame. */
         std::size_t size () const { return points_.size (); }
 
+        /** \brief Registered views so far. */
+        std::size_t views () const { return frames_.size (); }
+
       private:
+        /** Count, mean and scatter of points: the principal axes of a union of views follow from
+          * theirs without another pass over the points. */
+        struct Moments
+        {
+          double count = 0.0;
+          Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
+          Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero ();
+        };
+
+        /** One view's own principal axes and the extents of every registered point along them
+          * (relative to anchor_), kept up to date as views are added, so that a check costs one pass
+          * over the new points instead of one per view over all points. */
+        struct Frame
+        {
+          bool valid = false;  ///< false: the view has fewer than three finite points, hence no axes
+          Eigen::Matrix3d axes = Eigen::Matrix3d::Identity ();
+          Eigen::Vector3d low = Eigen::Vector3d::Zero (), high = Eigen::Vector3d::Zero ();
+        };
+
+        /** A group holding one view, in the view's frame. */
+        GlobalVerification
+        single (const pcl::PointCloud<pcl::PointNormal>& cloud) const;
+
+        /** Extents of this group's points and \a other's moved by \a pose, along \a axes (common frame). */
+        Eigen::Vector3d
+        unionExtents (const GlobalVerification& other, const Eigen::Affine3d& pose, const Eigen::Matrix3d& axes) const;
+
+        /** \a frame of \a other moved by \a pose into this group, relative to anchor_. */
+        Frame
+        movedFrame (const Frame& frame, const GlobalVerification& other, const Eigen::Affine3d& pose) const;
+
         ObjectDimensions dims_;
         double resolution_;
         GlobalVerificationParams params_;
         std::vector<Eigen::Vector3d> points_;
-        /** Where each registered view's points start in points_. */
-        std::vector<std::size_t> view_starts_;
+        std::vector<Frame> frames_;
+        Moments moments_;
+        /** The first finite point: extents are measured from it, which keeps the digits that large
+          * coordinates would take. */
+        Eigen::Vector3d anchor_ = Eigen::Vector3d::Zero ();
+        bool anchored_ = false;
     };
   }
 }

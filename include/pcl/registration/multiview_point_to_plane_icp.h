@@ -71,13 +71,14 @@ namespace pcl
       * \param[in] resolution d_res, the unit of the distances in \a params
       * \param[in] params iterations, distances, sampling
       * \param[in] progress optional, called after each iteration
+      * \param[in] threads threads for the pairs (0: every core); the result is the same for any number
       * \throw pcl::BadArgumentException on sizes that do not agree, a pair or fixed view out of range,
       * or non-positive distances
       */
     MultiviewIcpResult
     multiviewPointToPlaneIcp (const std::vector<const ScanMesh*>& views, const ViewPoses& initial, const ViewPairs& pairs,
                               int fixed, double resolution, const MultiviewIcpParams& params,
-                              const MultiviewIcpProgress& progress = {});
+                              const MultiviewIcpProgress& progress = {}, unsigned threads = 1);
 
     /** \brief The pairs of views that overlap under the given poses: at least \a min_fraction of the
       * sampled points of the smaller view have a point of the other within \a max_distance d_res.
@@ -88,10 +89,12 @@ namespace pcl
       * \param[in] max_distance pairing distance in d_res
       * \param[in] min_fraction overlap needed, in (0, 1]
       * \param[in] sample_points points sampled per view
+      * \param[in] threads threads for the pairs (0: every core)
       * \return pairs (i < j), sorted
       */
     ViewPairs
     findOverlappingViews (const std::vector<const ScanMesh*>& views, const ViewPoses& poses, const std::vector<bool>& use,
-                          double resolution, double max_distance, double min_fraction, int sample_points = 500);
+                          double resolution, double max_distance, double min_fraction, int sample_points = 500,
+                          unsigned threads = 1);
   }
 }

@@ -6,6 +6,7 @@
 #include <pcl/registration/global_verification.h>
 #include <pcl/registration/multiview_point_to_plane_icp.h>
 #include <pcl/registration/tensor_registration.h>
+#include <pcl/registration/view_pair_ranking.h>
 #include <pcl/surface/scan_volumetric_integration.h>
 
 #include <functional>
@@ -25,6 +26,22 @@ namespace pcl
       pcl::PointCloud<pcl::PointXYZ>::ConstPtr cloud;
       /** Where the sensor was (default: looking along +z, ScanViewpoint::fromPositiveZ()). */
       ScanViewpoint viewpoint = ScanViewpoint::fromPositiveZ ();
+      /** The view prepared before (e.g. from a cache; prepareTensorView, centred or not), or null
+        * (default): then \a cloud is meshed. Its tensors are used when they were computed with the D
+        * of this registration. */
+      TensorView::ConstPtr view;
+    };
+
+    /** \brief How multiview registration chooses the pairs it registers. */
+    enum class ViewSearch
+    {
+      /** Beyond the paper: every pair of views ranked from their tensors (ViewPairRanking) and
+        * registered best first while it joins two groups of registered views, with global
+        * verification of the joined group. For views in any order; views that no chain of verified
+        * pairs links form separate groups (components), each a model of its own. */
+      RANKED,
+      /** The paper's (Fig. 9): each view, in the order given, against the views registered before it. */
+      ORDERED
     };
 
     /** \brief The stages of multiview registration, in order (Fig. 9, modules 1-5). */
@@ -40,6 +57,14 @@ namespace pcl
     std::string
     toString (MultiviewStage stage);
 
+    /** \brief A full pairwise registration of views \a scene into \a model's frame (indices into the
+      * views), both prepared, without global verification: registerTensorViews() by default; an
+      * application may answer from a cache or from results computed elsewhere. Called from several
+      * threads at once. */
+    using ViewPairRegistration = std::function<TensorRegistrationReport (
+        int model, int scene, const TensorView::ConstPtr& model_view, const TensorView::ConstPtr& scene_view,
+        const ObjectDimensions& dims, const TensorRegistrationParams& params)>;
+
     /** \brief Progress: \a done of \a total steps of \a stage are finished (views, or global iterations). */
     using MultiviewProgress = std::function<void (MultiviewStage stage, std::size_t done, std::size_t total)>;
 
@@ -54,12 +79,28 @@ namespace pcl
         * from all views by Eq. 1, which underestimates an extent that no single view sees whole (the
         * dragon's depth on a turntable, by 28 d_res), and then the dimension checks need more tolerance. */
       Eigen::Vector3d object_dimensions = Eigen::Vector3d::Zero ();
+      /** How pairs are chosen (default RANKED: any order). */
+      ViewSearch search = ViewSearch::RANKED;
+      /** RANKED: the sample of tensors that ranks the pairs. */
+      ViewPairRankingParams ranking;
+      /** RANKED: a view whose this many candidate pairs failed is left out of further pairs (0: no
+        * limit), so that a view of another object costs a few refusals, not one per view. */
+      int max_failed_pairs = 8;
+      /** RANKED: hypotheses a pair may verify on the first pass over the candidates (0: as many as
+        * the pairwise max_hypotheses). A pair refused within them is registered again, with every
+        * hypothesis, only if views are still apart when the first pass is over: a true pair is
+        * nearly always found by its first few hypotheses, and a refusal then costs a fraction. */
+      int first_pass_hypotheses = 20;
+      /** RANKED: on the second pass, pairs registered with every hypothesis between two groups of
+        * views, best ranked first (0: all): a refusal there is slow, and if two groups overlap their
+        * best-ranked pairs are the likeliest to show it. */
+      int second_pass_pairs = 2;
       /** A turntable set: the last view also overlaps the first, and the global step closes the loop. */
       bool loop = false;
-      /** Registered views each new view is tried against, most recently registered first (0: all).
+      /** ORDERED: registered views each new view is tried against, most recently registered first (0: all).
         * With explicit pairs only the view's registered partners are tried. */
       int max_references = 0;
-      /** Try every reference and keep the registration with the largest overlap, instead of the first
+      /** ORDERED: try every reference and keep the registration with the largest overlap, instead of the first
         * that passes verification: slower, for unordered sets whose neighbours are not known. */
       bool keep_best = false;
       /** Run the global step (Section 5, module 5 of Fig. 9). */
@@ -84,9 +125,12 @@ namespace pcl
     {
       std::string name;
       bool registered = false;
-      /** The view it was registered to (-1: the reference view, or not registered). */
+      /** The view it was registered to (-1: its component's reference view, or not registered). */
       int reference = -1;
-      /** View -> common frame (the first registered view's frame): after the global step when it ran. */
+      /** Its group of views registered together, largest first (0: the main model; -1: not registered). */
+      int component = -1;
+      /** View -> its component's frame (the frame of the component's reference view): after the
+        * global step when it ran. */
       Eigen::Affine3d pose = Eigen::Affine3d::Identity ();
       /** The same pose from pairwise registration alone, before the global step. */
       Eigen::Affine3d pairwise_pose = Eigen::Affine3d::Identity ();
@@ -101,7 +145,21 @@ namespace pcl
       std::string error;
       /** M_i and M'_i of the view (null when it could not be prepared), for integration. */
       std::shared_ptr<const PreparedScan> prepared;
+      /** The view with its tensors (null when it could not be used), e.g. to keep in a cache. */
+      TensorView::ConstPtr view;
       double prepare_ms = 0.0, tensors_ms = 0.0, pairwise_ms = 0.0;
+    };
+
+    /** \brief One pair RANKED search registered fully, in the order it did. */
+    struct ViewPairAttempt
+    {
+      int first = -1, second = -1;  ///< the views (first < second; second registered into first's frame)
+      double score = 0.0;           ///< its ranking score (ViewPairCandidate)
+      bool registered = false;      ///< pairwise registration passed local verification
+      bool joined = false;          ///< ... and global verification of the joined groups
+      bool full = false;            ///< with every hypothesis (the second pass), not the first pass's few
+      double excess = 0.0;          ///< max(D_L - D) in d_res of the joined groups (when registered)
+      double ms = 0.0;              ///< wall time of the pairwise registration
     };
 
     /** \brief What multiview registration did: one object for apps, JSON and the bench. */
@@ -110,23 +168,30 @@ namespace pcl
       std::vector<ViewRegistrationStatus> views;
       ObjectDimensions dimensions;  ///< D from all usable views (Eq. 1)
       double resolution = 0.0;      ///< d_res: the mean of the usable views' fine resolutions
-      int reference = -1;           ///< the view that defines the common frame
+      int reference = -1;           ///< the view that defines the common frame (of component 0)
+      int components = 0;           ///< groups of views registered together (one model each)
       ViewPairs pairs;              ///< the pairs the global step used
+      /** The registrations that joined the views (RANKED: a spanning tree of each component). */
+      ViewPairs joins;
+      /** RANKED: every pair considered, best first, and the pairs fully registered, in order. */
+      std::vector<ViewPairCandidate> candidates;
+      std::vector<ViewPairAttempt> attempts;
       MultiviewIcpResult global;    ///< what the global step did (poses: also in views[i].pose)
       struct Timings
       {
-        double prepare_ms = 0.0, tensors_ms = 0.0, pairwise_ms = 0.0, global_ms = 0.0, total_ms = 0.0;
+        double prepare_ms = 0.0, tensors_ms = 0.0, ranking_ms = 0.0, pairwise_ms = 0.0, global_ms = 0.0, total_ms = 0.0;
       } timings;
 
       std::size_t registeredCount () const;
     };
 
-    /** \brief The registered views as volumetric integration takes them: each view's fine mesh M_i in
-      * its own frame (sharing ownership of the view's prepared scan) and its pose after the global step.
+    /** \brief The registered views of one component as volumetric integration takes them: each view's
+      * fine mesh M_i in its own frame (sharing ownership of the view's prepared scan) and its pose
+      * after the global step.
       * \ingroup registration
       */
     std::vector<pcl::IntegrationView>
-    registeredIntegrationViews (const MultiviewRegistrationResult& result);
+    registeredIntegrationViews (const MultiviewRegistrationResult& result, int component = 0);
 
     /** \brief Automatic registration of ordered views (Mian et al., Sections 4.2 and 5; Fig. 9,
       * modules 1-5): every view is meshed and reduced and its tensors computed once, with D from all
@@ -168,6 +233,10 @@ namespace pcl
         void setNumberOfThreads (unsigned threads) { threads_ = threads; }
         unsigned getNumberOfThreads () const { return threads_; }
 
+        /** \brief How RANKED search registers a pair (default: registerTensorViews() with the pairwise
+          * parameters). */
+        void setPairRegistration (const ViewPairRegistration& registration) { pair_registration_ = registration; }
+
         /** \brief Register the views.
           * \throw pcl::BadArgumentException on a pair out of range or bad parameters; a view that
           * cannot be used (too few points) is reported in its status, not thrown
@@ -179,6 +248,7 @@ namespace pcl
         ViewPairs pairs_;
         MultiviewProgress progress_;
         unsigned threads_{0};
+        ViewPairRegistration pair_registration_;
     };
   }
 }

@@ -60,6 +60,16 @@ namespace pcl
       *         pcl::PointNormal and pcl::PointXYZRGB); only the coordinates are used
       * \ingroup registration
       */
+    /** \brief Register two prepared views with D = \a dims, as TensorRegistration::align() does with
+      * the views it is given, without clouds: the report's transform takes \a scene's own frame into
+      * \a model's. Tensors a view lacks are computed with \a dims. For many views of one object,
+      * prepared once (MultiviewTensorRegistration, pcl_tensor_pairs).
+      * \throw pcl::BadArgumentException on bad parameters or a null view
+      */
+    TensorRegistrationReport
+    registerTensorViews (const TensorView::ConstPtr& model, const TensorView::ConstPtr& scene, const ObjectDimensions& dims,
+                         const TensorRegistrationParams& params, const HypothesisAcceptor& accept = {});
+
     template <typename PointSource = pcl::PointXYZ, typename PointTarget = PointSource>
     class TensorRegistration : public Registration<PointSource, PointTarget, float>
     {

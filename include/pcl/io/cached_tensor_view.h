@@ -1,0 +1,65 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#pragma once
+
+#include <pcl/io/content_hash.h>
+#include <pcl/io/tensor_view_cache.h>
+#include <pcl/registration/multiview_tensor_registration.h>
+
+#include <vector>
+
+namespace pcl
+{
+  namespace io
+  {
+    /** \brief What the cache held for one view, and what had to be computed. */
+    struct CachedViewReport
+    {
+      std::string id;           ///< the view's entry name (viewIdOf())
+      TensorViewCacheKey key;   ///< its file and preparation
+      CacheEntryState meshes_found = CacheEntryState::MISSING;
+      CacheEntryState tensors_found = CacheEntryState::MISSING;
+      bool meshes_computed = false;
+      bool tensors_computed = false;
+    };
+
+    /** \brief The key of a view file: its bytes, and the settings and sensor it is prepared with. */
+    TensorViewCacheKey
+    viewCacheKey (const std::string& file, const ScanPreparationParams& params, const ScanViewpoint& viewpoint);
+
+    /** \brief A view's meshes from \a cache when its entry is VALID for \a key, else prepared
+      * (prepareTensorView(), centred) and stored: what pcl_tensor_prepare and pcl_tensor_model share.
+      * \throw pcl::InvalidScanException when the view cannot be meshed, pcl::IOException when the entry
+      * cannot be written */
+    pcl::registration::TensorView::Ptr
+    cachedView (const TensorViewCache& cache, const std::string& id, const TensorViewCacheKey& key,
+                const pcl::PointCloud<pcl::PointXYZ>& cloud, const ScanViewpoint& viewpoint,
+                const ScanPreparationParams& params, CachedViewReport& report);
+
+    /** \brief \a view's tensors for D = \a dims from \a cache when VALID, else computed
+      * (computeViewTensors()) and stored. \a view must hold its meshes. */
+    void
+    addCachedTensors (const TensorViewCache& cache, const std::string& id, const TensorViewCacheKey& key,
+                      const ObjectDimensions& dims, const pcl::registration::TensorRegistrationParams& params,
+                      pcl::registration::TensorView& view, CachedViewReport& report);
+
+    /** \brief Views to register, each from \a cache or computed and stored there: meshes, then D
+      * (params.object_dimensions when given, else Eq. 1 over all the views' meshes, as
+      * MultiviewTensorRegistration takes it), then tensors, on \a threads threads (0: every core).
+      * Each input names its file (MultiviewInput::name) and holds its cloud and viewpoint; on return
+      * it holds its prepared view, and its cloud is released. A view that cannot be meshed keeps its
+      * cloud, and registration reports why.
+      * \return what the cache held for each view */
+    std::vector<CachedViewReport>
+    prepareCachedViews (const TensorViewCache& cache, std::vector<pcl::registration::MultiviewInput>& inputs,
+                        const pcl::registration::MultiviewRegistrationParams& params, unsigned threads = 0);
+
+    /** \brief Pair registrations answered from \a cache when a VALID entry exists for both views' keys,
+      * D and the settings (pairCacheKey()), else registered (registerTensorViews()) and stored, for
+      * MultiviewTensorRegistration::setPairRegistration(). \a views: prepareCachedViews()' reports, in
+      * the order of the views; \a cache must outlive the returned function. */
+    pcl::registration::ViewPairRegistration
+    cachedPairRegistration (const TensorViewCache& cache, const std::vector<CachedViewReport>& views);
+  }
+}

@@ -1,0 +1,120 @@
+/*
+ * pcl_tensor: automatic pairwise registration of range images with tensors.
+ */
+#include <pcl/io/tensor_view_cache_key.h>
+#include <pcl/io/content_hash.h>
+
+#include <algorithm>
+#include <filesystem>
+
+namespace pcl
+{
+  namespace io
+  {
+    namespace
+    {
+      bool
+      isIdCharacter (char c)
+      {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' ||
+               c == '.';
+      }
+
+      /** Each hash starts with what it is of, so that equal bytes of two kinds never give one key. */
+      ContentHash
+      taggedHash (std::string_view tag)
+      {
+        ContentHash hash;
+        hash.add (static_cast<std::uint64_t> (tag.size ())).update (tag);
+        return hash;
+      }
+    }
+
+    std::uint64_t
+    hashPointCloud (const pcl::PointCloud<pcl::PointXYZ>& cloud)
+    {
+      ContentHash hash = taggedHash ("range image");
+      hash.add (cloud.width).add (cloud.height).add (static_cast<std::uint64_t> (cloud.size ()));
+      for (const auto& p : cloud)
+        hash.add (p.x).add (p.y).add (p.z);
+      return hash.digest ();
+    }
+
+    // A new field of ScanPreparationParams changes its size on this ABI: hash it below, then update this.
+    static_assert (sizeof (ScanPreparationParams) == 48, "hash every field of ScanPreparationParams in hashPreparation");
+
+    std::uint64_t
+    hashPreparation (const ScanPreparationParams& params, const ScanViewpoint& viewpoint)
+    {
+      ContentHash hash = taggedHash ("preparation");
+      hash.add (params.edge_std_devs).add (params.target_faces).add (params.normal_method)
+          .add (params.normal_radius_resolutions).add (params.stray_fragment_gap).add (params.stray_fragment_fraction)
+          .add (params.reduction_grid_step);
+      hash.add (viewpoint.model);
+      const Eigen::Matrix4d& pose = viewpoint.sensor_pose.matrix ();
+      for (Eigen::Index i = 0; i < pose.size (); ++i)
+        hash.add (pose.data ()[i]);
+      return hash.digest ();
+    }
+
+    std::uint64_t
+    hashTensorParameters (const pcl::registration::TensorRegistrationParams& params)
+    {
+      // The fields detail::configureEstimation() sets (src/registration/tensor_configuration.cpp).
+      ContentHash hash = taggedHash ("tensors");
+      hash.add (params.grid_size).add (params.partners_per_vertex).add (params.min_normal_angle)
+          .add (params.region_growing);
+      return hash.digest ();
+    }
+
+    TensorViewCacheKey
+    pairCacheKey (const TensorViewCacheKey& model, const TensorViewCacheKey& scene, const ObjectDimensions& dims,
+                  const pcl::registration::TensorRegistrationParams& params)
+    {
+      static_assert (sizeof (pcl::registration::TensorVerificationParams) == 96,
+                     "a field was added to TensorVerificationParams: add it to pairCacheKey () too");
+      static_assert (sizeof (pcl::registration::TensorRegistrationParams) == 240,
+                     "a field was added to TensorRegistrationParams: add it to pairCacheKey () too");
+      TensorViewCacheKey key;
+      key.source = taggedHash ("pair").add (model.source).add (model.preparation).add (scene.source).add (scene.preparation).digest ();
+      const auto& v = params.verification;
+      ContentHash hash = taggedHash ("registration");
+      hash.add (dims.D[0]).add (dims.D[1]).add (dims.D[2]).add (hashTensorParameters (params));
+      hash.add (hashPreparation (params.preparation, ScanViewpoint ()));
+      hash.add (params.overlap_threshold).add (params.correlation_threshold).add (params.theta_bin_width)
+          .add (static_cast<int> (params.order)).add (params.scene_tensor_batches).add (params.batch_hypotheses)
+          .add (params.max_hypotheses).add (params.repeat_rotation).add (params.repeat_translation)
+          .add (params.ambiguity_checks).add (params.ambiguity_rotation);
+      hash.add (v.coarse_dimension_fraction).add (v.correspondence_fraction).add (v.coarse_distance).add (v.count_both_views)
+          .add (v.fine_distance).add (v.fine_dimension_tolerance).add (v.checked_dimensions).add (v.icp_iterations)
+          .add (v.icp_max_distance).add (v.icp_final_distance).add (v.icp_coarse_stage_step).add (v.sample_points)
+          .add (v.free_space_distance).add (v.free_space_fraction);
+      key.preparation = hash.digest ();
+      return key;
+    }
+
+    std::string
+    viewIdOf (const std::string& path)
+    {
+      namespace fs = std::filesystem;
+      std::error_code ec;
+      // weakly_canonical: the file need not exist (yet), and "a/../b.ply" and "b.ply" are one view.
+      fs::path canonical = fs::weakly_canonical (fs::absolute (path), ec);
+      if (ec)
+        canonical = fs::absolute (path).lexically_normal ();
+      std::string stem = fs::path (path).stem ().string ();
+      std::replace_if (stem.begin (), stem.end (), [] (char c) { return !isIdCharacter (c); }, '_');
+      if (stem.empty () || stem[0] == '.')
+        stem.insert (stem.begin (), '_');
+      stem.resize (std::min<std::size_t> (stem.size (), 64));
+      return stem + "-" + toHex (hashBytes (canonical.string ()));
+    }
+
+    bool
+    isValidViewId (const std::string& view_id)
+    {
+      return !view_id.empty () && view_id.size () <= 200 && view_id[0] != '.' &&
+             std::all_of (view_id.begin (), view_id.end (), isIdCharacter);
+    }
+  }
+}

@@ -1,0 +1,25 @@
+/*
+ * pcl_tensor: multiview registration of views in any order (private to the library).
+ */
+#pragma once
+
+#include <pcl/registration/multiview_tensor_registration.h>
+
+namespace pcl
+{
+  namespace registration
+  {
+    namespace detail
+    {
+      /** \brief RANKED search: every pair of \a views (or only \a allowed ones) ranked by their tensors,
+        * then registered best first while it joins two groups, each join checked by global
+        * verification over both groups (Section 4.2). Fills the views' status (registered, reference,
+        * component, pairwise poses), the joins, the candidates and the components of \a result.
+        * \param[in] views each view with its tensors (null: unusable) */
+      void
+      registerRankedViews (const MultiviewRegistrationParams& params, const ViewPairs& allowed,
+                           const std::vector<TensorView::ConstPtr>& views, const ViewPairRegistration& registration,
+                           unsigned threads, const MultiviewProgress& progress, MultiviewRegistrationResult& result);
+    }
+  }
+}
