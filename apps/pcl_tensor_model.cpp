@@ -3,6 +3,7 @@
  * every view registered automatically, global verification and registration, then volumetric
  * integration and marching cubes.
  */
+#include "multiview_options.h"
 #include "progress_bar.h"
 #include "tool_main.h"
 
@@ -12,7 +13,9 @@
 #include <pcl/console/time.h>
 #include <pcl/io/atomic_file.h>
 #include <pcl/io/cached_tensor_view.h>
+#include <pcl/io/model_run_record.h>
 #include <pcl/io/ply_io.h>
+#include <pcl/io/recorded_pair_registration.h>
 #include <pcl/io/range_scan_io.h>
 #include <pcl/io/registration_report_json.h>
 #include <pcl/io/stanford_conf.h>
@@ -23,6 +26,7 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 using namespace pcl::console;
 
@@ -46,6 +50,8 @@ namespace
     print_info ("  --pairs FILE       overlapping pairs, one \"A B\" per line (file names or 0-based indices)\n");
     print_info ("  --cache DIR        keep each view's meshes and tensors in DIR (pcl_tensor_prepare's cache): a re-run,\n"
                 "                     or one with views added, computes only what is new\n");
+    print_info ("  --pairs-results F  pair registrations computed elsewhere (pcl_tensor_pairs; repeat for several\n"
+                "                     files): pairs are taken from them, never registered here\n");
     print_info ("  --loop             a turntable: the last view overlaps the first (closes the loop)\n");
     print_info ("  --ordered          the paper's order instead (Fig. 9): each view overlaps one given before it\n");
     print_info ("  --references N     with --ordered: registered views each new view is tried against, newest first,\n"
@@ -73,6 +79,7 @@ namespace
   {
     std::vector<std::string> views;
     std::string output, conf, pairs, cache;
+    std::vector<std::string> pairs_results;
     bool json = false;
     unsigned threads = 0;
     pcl::registration::MultiviewRegistrationParams registration;
@@ -86,30 +93,6 @@ namespace
     return slash == std::string::npos ? path : path.substr (slash + 1);
   }
 
-  /** Fail before the work, not after it, when an output cannot be written. */
-  void
-  requireWritableFolder (const std::string& file)
-  {
-    const std::filesystem::path folder = std::filesystem::absolute (file).parent_path ();
-    if (!std::filesystem::is_directory (folder))
-      PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << file << "': no folder " << folder);
-  }
-
-  /** --dims and --dims-tolerance: what the object's size is known to be, and how strictly to hold to it. */
-  void
-  parseDimensions (int argc, char** argv, pcl::registration::MultiviewRegistrationParams& p)
-  {
-    pcl_tensor_tools::parseObjectDimensions (argc, argv, p.object_dimensions);
-    double tolerance = 0.0;
-    if (parse_argument (argc, argv, "--dims-tolerance", tolerance) >= 0)
-    {
-      if (!(tolerance >= 0.0))
-        PCL_TENSOR_THROW (pcl::BadArgumentException, "--dims-tolerance must be a non-negative number of d_res");
-      p.global_verification.tolerance = tolerance;
-      p.pairwise.verification.fine_dimension_tolerance = tolerance;
-    }
-  }
-
   ModelOptions
   parseOptions (int argc, char** argv)
   {
@@ -119,10 +102,13 @@ namespace
       PCL_TENSOR_THROW (pcl::BadArgumentException, "-o model.ply is required; see --help");
     o.conf = o.output.substr (0, o.output.find_last_of ('.')) + ".conf";
     parse_argument (argc, argv, "--conf", o.conf);
-    requireWritableFolder (o.output);
-    requireWritableFolder (o.conf);
+    pcl_tensor_tools::requireWritableFolder (o.output);
+    pcl_tensor_tools::requireWritableFolder (o.conf);
     parse_argument (argc, argv, "--pairs", o.pairs);
     parse_argument (argc, argv, "--cache", o.cache);
+    for (int i = 1; i + 1 < argc; ++i)
+      if (std::string (argv[i]) == "--pairs-results")
+        o.pairs_results.push_back (argv[++i]);
     o.views = pcl_tensor_tools::scanFileArguments (argc, argv, {o.output, o.conf});
     if (o.views.size () < 2)
       PCL_TENSOR_THROW (pcl::BadArgumentException, "expected at least two VIEW files (.ply or .pcd); see --help");
@@ -137,8 +123,7 @@ namespace
       o.registration.search = pcl::registration::ViewSearch::ORDERED;
     o.registration.global_registration = !find_switch (argc, argv, "--no-global");
     parse_argument (argc, argv, "--references", o.registration.max_references);
-    parse_argument (argc, argv, "--faces", o.registration.pairwise.preparation.target_faces);
-    parseDimensions (argc, argv, o.registration);
+    pcl_tensor_tools::parseMultiviewPairOptions (argc, argv, o.registration);
     double voxel = 0.0;
     if (parse_argument (argc, argv, "--voxel", voxel) >= 0 && !(voxel > 0.0))
       PCL_TENSOR_THROW (pcl::BadArgumentException, "--voxel must be positive, got " << voxel);
@@ -150,20 +135,18 @@ namespace
     return o;
   }
 
-  std::vector<pcl::registration::MultiviewInput>
-  loadViews (const std::vector<std::string>& files, int argc, char** argv)
+  /** View \a i of the command line: its file, cloud and sensor (--viewpoint or from the file). */
+  pcl::io::MultiviewInputLoader
+  viewLoader (const std::vector<std::string>& files, int argc, char** argv)
   {
-    std::vector<pcl::registration::MultiviewInput> views;
-    for (const auto& file : files)
-    {
-      const pcl::io::RangeScan scan = pcl_tensor_tools::loadScan (file, argc, argv);
+    return [&files, argc, argv] (std::size_t i) {
+      const pcl::io::RangeScan scan = pcl_tensor_tools::loadScan (files[i], argc, argv);
       pcl::registration::MultiviewInput view;
-      view.name = file;
+      view.name = files[i];
       view.viewpoint = scan.viewpoint;
       view.cloud = scan.cloud;
-      views.push_back (std::move (view));
-    }
-    return views;
+      return view;
+    };
   }
 
   void
@@ -211,7 +194,7 @@ namespace
 
   struct StageTimes
   {
-    double load_ms = 0.0, integration_ms = 0.0, write_ms = 0.0, total_ms = 0.0;
+    double preparation_ms = 0.0, integration_ms = 0.0, write_ms = 0.0, total_ms = 0.0;
   };
 
   pcl::io::JsonReport
@@ -234,7 +217,7 @@ namespace
       all.push_back (toJson (m));
     j["models"] = std::move (all);
     auto& timings = j["timings_ms"];
-    timings["load"] = t.load_ms;
+    timings["preparation"] = t.preparation_ms;
     timings["integration"] = t.integration_ms;
     timings["write"] = t.write_ms;
     timings["total"] = t.total_ms;
@@ -254,30 +237,69 @@ namespace
       print_info (", poses to "); print_value ("%s", m.conf.c_str ());
     }
     print_info ("\n");
-    print_info ("Times (ms): load %.0f, meshing %.0f, tensors %.0f, ranking %.0f, pairwise %.0f (%zu pairs), global %.0f, "
-                "integration %.0f, write %.0f, total %.0f\n", t.load_ms, r.timings.prepare_ms, r.timings.tensors_ms,
+    print_info ("Times (ms): preparation (loading, meshing, tensors) %.0f, ranking %.0f, pairwise %.0f (%zu pairs), global %.0f, "
+                "integration %.0f, write %.0f, total %.0f\n", t.preparation_ms + r.timings.prepare_ms + r.timings.tensors_ms,
                 r.timings.ranking_ms, r.timings.pairwise_ms, r.attempts.size (), r.timings.global_ms, t.integration_ms,
                 t.write_ms, t.total_ms);
   }
 
-  /** One line on stderr per view that is not in the main model, saying why or where it went. */
-  std::size_t
-  reportViewsLeftOut (const pcl::registration::MultiviewRegistrationResult& r, const std::vector<ComponentModel>& models)
+  /** One line per view that is not in the main model, saying why or where it went (for stderr). */
+  std::string
+  viewsLeftOut (const pcl::registration::MultiviewRegistrationResult& r, const std::vector<ComponentModel>& models)
   {
-    std::size_t left_out = 0;
+    std::ostringstream lines;
     for (const auto& v : r.views)
       if (!v.registered)
-      {
-        ++left_out;
-        std::cerr << "pcl_tensor_model: not registered: " << v.name << ": "
-                  << (v.error.empty () ? "no pair with it passed local and global verification" : v.error) << std::endl;
-      }
+        lines << "pcl_tensor_model: not registered: " << v.name << ": "
+              << (v.error.empty () ? "no pair with it passed local and global verification" : v.error) << "\n";
       else if (v.component > 0)
-      {
-        ++left_out;
-        std::cerr << "pcl_tensor_model: in a separate model: " << v.name << ": " << models[v.component].model << std::endl;
-      }
-    return left_out;
+        lines << "pcl_tensor_model: in a separate model: " << v.name << ": " << models[v.component].model << "\n";
+    return lines.str ();
+  }
+
+  /** The files a run reads besides its settings: the views, and any pairs or pair results. */
+  std::vector<std::string>
+  inputFiles (const ModelOptions& o)
+  {
+    std::vector<std::string> files = o.views;
+    files.insert (files.end (), o.pairs_results.begin (), o.pairs_results.end ());
+    if (!o.pairs.empty ())
+      files.push_back (o.pairs);
+    return files;
+  }
+
+  /** What changes a run's outputs besides its input files: every argument but -j and --json. */
+  std::vector<std::string>
+  outputSettings (int argc, char** argv)
+  {
+    std::vector<std::string> settings;
+    for (int i = 1; i < argc; ++i)
+    {
+      const std::string a = argv[i];
+      if (a == "-j" && i + 1 < argc)
+        ++i;
+      else if (a != "--json")
+        settings.push_back (a);
+    }
+    return settings;
+  }
+
+  /** A run whose inputs, settings and outputs are those of the run recorded in the cache: nothing
+    * is computed, what it reported is reported again. */
+  int
+  replay (const pcl::io::ModelRunRecord& record, const ModelOptions& o)
+  {
+    if (o.json)
+      std::cout << record.report << std::endl;
+    else
+    {
+      print_info ("Nothing new since the last run with this cache: its outputs are in place (");
+      for (const auto& out : record.outputs)
+        print_value ("%s ", out.first.c_str ());
+      print_info (")\n");
+    }
+    std::cerr << record.messages;
+    return record.exit_code;
   }
 
   /** Volumetric integration of each component into its own model. */
@@ -319,15 +341,40 @@ namespace
     pcl::ScanVolumetricIntegration integration;
     integration.setParams (o.integration);
     timer.tic ();
-    auto inputs = loadViews (o.views, argc, argv);
+    // Each view loaded, meshed and its tensors computed in one pass (or taken from the cache), so that
+    // the raw scans are not all in memory at once.
     std::unique_ptr<pcl::io::TensorViewCache> cache;
+    pcl::io::TensorViewCacheKey run_key;
     if (!o.cache.empty ())
     {
       cache = std::make_unique<pcl::io::TensorViewCache> (o.cache);
-      const auto cached = pcl::io::prepareCachedViews (*cache, inputs, o.registration, o.threads);
-      registration.setPairRegistration (pcl::io::cachedPairRegistration (*cache, cached));
+      run_key = pcl::io::modelRunKey (inputFiles (o), outputSettings (argc, argv));
+      pcl::io::ModelRunRecord record;
+      if (pcl::io::loadModelRun (*cache, run_key, record))
+        return replay (record, o);
     }
-    t.load_ms = timer.toc ();
+    std::vector<pcl::registration::MultiviewInput> inputs;
+    const auto prepared = pcl::io::prepareMultiviewInputs (o.views.size (), viewLoader (o.views, argc, argv), o.registration,
+                                                           o.threads, cache.get (), inputs);
+    // Pairs from the cache (or registered and kept there), and from results computed elsewhere first.
+    pcl::registration::ViewPairRegistration pairs = [] (int, int, const auto& model, const auto& scene, const auto& dims,
+                                                        const auto& params) {
+      return pcl::registration::registerTensorViews (model, scene, dims, params);
+    };
+    if (cache)
+      pairs = pcl::io::cachedPairRegistration (*cache, prepared);
+    if (!o.pairs_results.empty ())
+    {
+      std::vector<pcl::io::ViewPairResult> recorded;
+      for (const auto& file : o.pairs_results)
+      {
+        const auto results = pcl::io::loadViewPairResults (file);
+        recorded.insert (recorded.end (), results.begin (), results.end ());
+      }
+      pairs = pcl::io::recordedPairRegistration (recorded, o.views, pairs);
+    }
+    registration.setPairRegistration (pairs);
+    t.preparation_ms = timer.toc ();
     if (!o.pairs.empty ())
       registration.setPairs (pcl::io::loadViewPairs (o.pairs, o.views));
     registration.setProgressCallback ([&progress] (pcl::registration::MultiviewStage stage, std::size_t done, std::size_t n) {
@@ -351,11 +398,23 @@ namespace
     t.write_ms = timer.toc ();
     t.total_ms = total.toc ();
 
+    pcl::io::ModelRunRecord record;
+    record.report = jsonSummary (result, models, t);
+    record.messages = viewsLeftOut (result, models);
+    record.exit_code = record.messages.empty () ? kExitModelled : pcl_tensor_tools::kExitNotRegistered;
     if (o.json)
-      std::cout << jsonSummary (result, models, t) << std::endl;
+      std::cout << record.report << std::endl;
     else
       printText (result, models, t);
-    return reportViewsLeftOut (result, models) > 0 ? pcl_tensor_tools::kExitNotRegistered : kExitModelled;
+    std::cerr << record.messages;
+    if (cache)
+    {
+      for (const auto& m : models)
+        for (const auto& file : {m.model, m.conf})
+          record.outputs.emplace_back (file, pcl::io::hashFileContents (file));
+      pcl::io::saveModelRun (*cache, run_key, record);
+    }
+    return record.exit_code;
   }
 }
 

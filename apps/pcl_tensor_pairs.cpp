@@ -117,14 +117,15 @@ namespace
     return view;
   }
 
-  /** The views registration needs, from the cache: each listed view's key and extents (for D), and
-    * the meshes and tensors of those \a needed (all when empty); the others stay null. */
+  /** The views with their tensors (null: not needed), and the D of those tensors. */
   struct LoadedViews
   {
     std::vector<pcl::registration::TensorView::ConstPtr> views;
     pcl::ObjectDimensions dims;
   };
 
+  /** From the cache: every listed view's key and extents (for D), and the meshes and tensors of the
+    * views in \a needed (all when empty). */
   LoadedViews
   loadViews (const PairsOptions& o, const std::vector<std::pair<int, int>>& needed, int argc, char** argv)
   {

@@ -16,7 +16,9 @@
 #include <pcl/simulation/synthetic_views.h>
 
 #include <cstdio>
+#include <algorithm>
 #include <filesystem>
+#include <random>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -37,6 +39,8 @@ namespace
     print_info ("  where options are:\n");
     print_info ("    --views N           the paper's default view set; only N = 26 exists (default: "); print_value ("26"); print_info (")\n");
     print_info ("    --ring N            instead, N views on the equator (turntable)\n");
+    print_info ("    --random N          add N views from random directions (uniform on the sphere, --seed)\n");
+    print_info ("    --shuffle           write the views in a random order (--seed): view_XX names no longer follow the set\n");
     print_info ("    --step DEG          azimuth step of the ring in degrees (default: "); print_value ("360/N"); print_info (")\n");
     print_info ("    --noise SIGMA       Gaussian noise along the viewing direction, in d_res (default: "); print_value ("%g", d.noise_sigma_resolutions); print_info (")\n");
     print_info ("    --size W H          image size in pixels (default: "); print_value ("%d %d", d.camera.width, d.camera.height); print_info (")\n");
@@ -52,7 +56,8 @@ namespace
   struct Options
   {
     std::string mesh, out_dir;
-    int views = 26, ring = 0;
+    int views = 26, ring = 0, random = 0;
+    bool shuffle = false;
     double step = 0.0;
     pcl::SyntheticViewParams params;
     pcl::ExampleObjectParams example;
@@ -105,6 +110,10 @@ namespace
       PCL_TENSOR_THROW (pcl::BadArgumentException, "--ring needs a positive number of views");
     if (find_switch (argc, argv, "--views") && (o.views != 26 || o.ring > 0))
       PCL_TENSOR_THROW (pcl::BadArgumentException, "--views only supports 26, and excludes --ring");
+    parse_argument (argc, argv, "--random", o.random);
+    if (o.random < 0)
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "--random needs a non-negative number of views");
+    o.shuffle = find_switch (argc, argv, "--shuffle");
     o.step = o.ring > 0 ? 360.0 / o.ring : 0.0;
     parse_argument (argc, argv, "--step", o.step);
     parse_argument (argc, argv, "--noise", o.params.noise_sigma_resolutions);
@@ -164,8 +173,12 @@ namespace
   {
     const Options o = parseOptions (argc, argv);
     const pcl::ScanMesh model = loadModel (o.mesh, o.example);
-    const auto directions = o.ring > 0 ? pcl::makeRingViewDirections (o.ring, o.step, 0.0, o.params.up)
-                                       : pcl::makeDefaultViewDirections (o.params.up);
+    auto directions = o.ring > 0 ? pcl::makeRingViewDirections (o.ring, o.step, 0.0, o.params.up)
+                                 : pcl::makeDefaultViewDirections (o.params.up);
+    for (const auto& d : pcl::makeRandomViewDirections (o.random, o.params.seed))
+      directions.push_back (d);
+    if (o.shuffle)
+      std::shuffle (directions.begin (), directions.end (), std::mt19937 (o.params.seed));
     TicToc tt;
     tt.tic ();
     const auto views = pcl::renderSyntheticViews (model, directions, o.params);

@@ -36,6 +36,8 @@ TOOLS = ("pcl_tensor_prepare", "pcl_tensor_pairs", "pcl_tensor_model")
 RESERVED = ("--cache", "--pairs", "--pairs-results", "--rank", "--only", "--tensors", "--json", "-o")
 # Pair chunks per worker thread: a slow chunk then leaves the others busy (the pairs differ in cost).
 CHUNKS_PER_WORKER = 2
+# How long a cluster may take to get its first worker: jobs would wait for one forever.
+WORKER_WAIT_SECONDS = 120
 
 
 def run_tool(command):
@@ -110,7 +112,13 @@ def without_option(options, name, values=1):
 def start_client(args):
     from dask.distributed import Client, LocalCluster
     if args.scheduler:
-        return Client(args.scheduler), None
+        client = Client(args.scheduler)
+        try:
+            client.wait_for_workers(1, timeout=WORKER_WAIT_SECONDS)
+        except TimeoutError:
+            client.close()
+            raise SystemExit(f"pcl_tensor_dask: error: no worker joined {args.scheduler} in {WORKER_WAIT_SECONDS} s")
+        return client, None
     cluster = LocalCluster(n_workers=args.workers, threads_per_worker=1, processes=True, dashboard_address=None)
     return Client(cluster), cluster
 

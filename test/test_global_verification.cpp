@@ -125,7 +125,7 @@ TEST (GlobalVerification, ExcessEqualsTheDirectComputationOverAllPoints)
     for (const auto& p : view)
       with.push_back (pose * p.getVector3fMap ().cast<double> ());
     const double direct = pcl::registeredDimensionExcess (with, with_starts, dims, 2) / d_res;
-    EXPECT_NEAR (verification.excess (view, pose), direct, 1e-6) << "view " << v;
+    EXPECT_NEAR (verification.excess (view, pose), direct, 1e-3) << "view " << v << " (points kept as floats)";
     verification.addView (view, pose);
     points = with;
     starts = with_starts;
@@ -162,8 +162,8 @@ TEST (GlobalVerification, MergingGroupsEqualsAddingTheirViewsOneByOne)
   // The union checked as a group, from either side, then merged.
   GlobalVerification merged = a;
   merged.merge (b, b_to_a);
-  EXPECT_NEAR (merged.excess (probe, Eigen::Affine3d::Identity ()), expected, 1e-6);
-  EXPECT_NEAR (a.excess (b, b_to_a), b.excess (a, b_to_a.inverse ()), 1e-6);
+  EXPECT_NEAR (merged.excess (probe, Eigen::Affine3d::Identity ()), expected, 1e-3);
+  EXPECT_NEAR (a.excess (b, b_to_a), b.excess (a, b_to_a.inverse ()), 1e-3);
   EXPECT_EQ (merged.size (), all.size ());
   EXPECT_EQ (merged.views (), 5u);
 }

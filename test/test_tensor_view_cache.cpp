@@ -6,7 +6,10 @@
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/io/atomic_file.h>
 #include <pcl/io/content_hash.h>
+#include <pcl/io/cached_tensor_view.h>
+#include <pcl/io/range_grid_ply.h>
 #include <pcl/io/tensor_view_cache.h>
+#include <pcl/registration/registration_error.h>
 #include <pcl/registration/tensor_registration.h>
 #include <pcl/simulation/example_object.h>
 #include <pcl/simulation/synthetic_views.h>
@@ -865,4 +868,86 @@ TEST_F (TensorViewCacheTest, AtomicWritersRefuseWhatTheyCannotWrite)
   EXPECT_THROW (pcl::io::writeFileAtomically ((dir_ / "missing" / "x.bin").string (), "x"), pcl::IOException);
   pcl::io::AtomicFileWriter one (destination), two (destination);
   EXPECT_NE (one.temporaryPath (), two.temporaryPath ()) << "two writers of one file never share a temporary";
+}
+
+// ---- pair registrations and cached multiview inputs ----------------------------------------------
+
+TEST_F (TensorViewCacheTest, PairRoundTripIsExactAndKeyedByEverySetting)
+{
+  const auto& pair = preparedPair ();
+  const TensorViewCache cache ((dir_ / "cache").string ());
+  const auto report = pcl::registration::registerTensorViews (pair.views[0], pair.views[1], pair.dims, pair.params);
+  ASSERT_TRUE (report.registered);
+  const TensorViewCacheKey other{kKey.source + 1, kKey.preparation};
+  const TensorViewCacheKey key = pcl::io::pairCacheKey (kKey, other, pair.dims, pair.params);
+  cache.savePair ("a", "b", key, report);
+
+  pcl::registration::TensorRegistrationReport loaded;
+  ASSERT_EQ (cache.loadPair ("a", "b", key, loaded), CacheEntryState::VALID);
+  EXPECT_TRUE (loaded.registered);
+  EXPECT_EQ (std::memcmp (loaded.transform.data (), report.transform.data (), sizeof (float) * 16), 0);
+  EXPECT_EQ (loaded.hypotheses_tried, report.hypotheses_tried);
+  EXPECT_EQ (loaded.matches, report.matches);
+  EXPECT_EQ (loaded.failures, report.failures);
+  EXPECT_EQ (bits (loaded.verification.fine_correspondences), bits (report.verification.fine_correspondences));
+  EXPECT_EQ (loaded.verification.stage, report.verification.stage);
+  EXPECT_EQ (cache.loadPair ("b", "a", key, loaded), CacheEntryState::MISSING) << "a pair has a direction";
+
+  // Any setting of the search, D or either view makes another key: the entry is stale, not reused.
+  auto fewer = pair.params;
+  fewer.max_hypotheses = 20;
+  pcl::ObjectDimensions bigger = pair.dims;
+  bigger.D *= 1.01;
+  for (const TensorViewCacheKey& changed : {pcl::io::pairCacheKey (kKey, other, pair.dims, fewer),
+                                            pcl::io::pairCacheKey (kKey, other, bigger, pair.params),
+                                            pcl::io::pairCacheKey (other, kKey, pair.dims, pair.params)})
+    EXPECT_EQ (cache.loadPair ("a", "b", changed, loaded), CacheEntryState::STALE);
+}
+
+TEST_F (TensorViewCacheTest, CachedViewsRegisterAsTheFirstRunDid)
+{
+  // Three views of a ring written as files: a first run fills the cache, a second takes every
+  // meshes, tensors and pair entry from it and must give the same poses bit for bit.
+  pcl::SyntheticViewParams render;
+  render.camera.width = render.camera.height = 200;
+  const auto rendered = pcl::renderSyntheticViews (pcl::makeExampleObject (), pcl::makeRingViewDirections (3, 30.0), render);
+  std::vector<pcl::registration::MultiviewInput> files;
+  for (std::size_t i = 0; i < rendered.size (); ++i)
+  {
+    const std::string path = (dir_ / ("view" + std::to_string (i) + ".ply")).string ();
+    pcl::io::saveRangeGridPLY (path, *rendered[i].view.cloud);
+    files.push_back ({path, rendered[i].view.cloud, rendered[i].view.viewpoint, nullptr});
+  }
+  const TensorViewCache cache ((dir_ / "cache").string ());
+  const pcl::registration::MultiviewRegistrationParams params;
+  std::vector<pcl::registration::MultiviewRegistrationResult> results;
+  for (int run = 0; run < 2; ++run)
+  {
+    std::vector<pcl::registration::MultiviewInput> inputs;
+    const auto reports = pcl::io::prepareMultiviewInputs (files.size (), [&] (std::size_t i) { return files[i]; }, params, 2,
+                                                          &cache, inputs);
+    for (const auto& r : reports)
+    {
+      EXPECT_EQ (r.meshes_computed, run == 0);
+      EXPECT_EQ (r.tensors_computed, run == 0);
+      EXPECT_EQ (r.meshes_found, run == 0 ? CacheEntryState::MISSING : CacheEntryState::VALID);
+    }
+    for (const auto& in : inputs)
+      EXPECT_TRUE (in.view && in.view->tensors && !in.cloud) << in.name << ": the prepared view replaces the cloud";
+    pcl::registration::MultiviewTensorRegistration registration;
+    registration.setPairRegistration (pcl::io::cachedPairRegistration (cache, reports));
+    results.push_back (registration.compute (inputs));
+  }
+  ASSERT_EQ (results[0].registeredCount (), 3u);
+  ASSERT_EQ (results[1].registeredCount (), 3u);
+  for (std::size_t i = 0; i < 3; ++i)
+  {
+    EXPECT_TRUE (results[0].views[i].pose.matrix () == results[1].views[i].pose.matrix ()) << i;
+    const auto truth = rendered[0].view.pose.inverse () * rendered[i].view.pose;
+    const auto error = pcl::registrationError (results[0].views[i].pose, truth, results[0].resolution);
+    EXPECT_LT (error.rotation_deg, 0.5) << i;
+  }
+  EXPECT_EQ (std::distance (fs::directory_iterator (dir_ / "cache"), fs::directory_iterator ()),
+             static_cast<std::ptrdiff_t> (3 * 2 + results[0].attempts.size ()))
+      << "one meshes and one tensors entry per view, one entry per pair registered";
 }

@@ -56,52 +56,78 @@ namespace pcl
       view.dimensions = dims;
     }
 
+    namespace
+    {
+      /** D as multiview registration takes it: the given dimensions, sorted, or Eq. 1 over the views. */
+      ObjectDimensions
+      dimensionsOf (const std::vector<pcl::registration::TensorView::Ptr>& views,
+                    const pcl::registration::MultiviewRegistrationParams& params)
+      {
+        ObjectDimensions dims;
+        dims.D = params.object_dimensions;
+        std::sort (dims.D.data (), dims.D.data () + 3, std::greater<> ());
+        if ((dims.D.array () > 0.0).all ())
+          return dims;
+        dims.D.setZero ();
+        for (const auto& v : views)
+          if (v)
+            dims.D = dims.D.cwiseMax (pcl::principalExtents (*v->scan->fine.cloud));
+        return dims;
+      }
+    }
+
     std::vector<CachedViewReport>
-    prepareCachedViews (const TensorViewCache& cache, std::vector<pcl::registration::MultiviewInput>& inputs,
-                        const pcl::registration::MultiviewRegistrationParams& params, unsigned threads)
+    prepareMultiviewInputs (std::size_t count, const MultiviewInputLoader& load,
+                            const pcl::registration::MultiviewRegistrationParams& params, unsigned threads,
+                            const TensorViewCache* cache, std::vector<pcl::registration::MultiviewInput>& inputs)
     {
       const auto& preparation = params.pairwise.preparation;
-      std::vector<CachedViewReport> reports (inputs.size ());
-      std::vector<TensorViewCacheKey> keys (inputs.size ());
-      std::vector<std::string> ids (inputs.size ());
-      std::vector<pcl::registration::TensorView::Ptr> views (inputs.size ());
-      pcl::detail::parallelFor (inputs.size (), threads, [&] (std::size_t i) {
-        auto& input = inputs[i];
-        ids[i] = reports[i].id = viewIdOf (input.name);
-        keys[i] = reports[i].key = viewCacheKey (input.name, preparation, input.viewpoint);
+      std::vector<CachedViewReport> reports (count);
+      std::vector<pcl::registration::TensorView::Ptr> views (count);
+      inputs.assign (count, {});
+      pcl::detail::parallelFor (count, threads, [&] (std::size_t i) {
+        auto& input = inputs[i] = load (i);
+        if (!input.cloud)
+          return;
         try
         {
-          if (input.cloud)
-            views[i] = cachedView (cache, ids[i], keys[i], *input.cloud, input.viewpoint, preparation, reports[i]);
+          if (cache)
+          {
+            reports[i].id = viewIdOf (input.name);
+            reports[i].key = viewCacheKey (input.name, preparation, input.viewpoint);
+            views[i] = cachedView (*cache, reports[i].id, reports[i].key, *input.cloud, input.viewpoint, preparation, reports[i]);
+          }
+          else
+          {
+            views[i] = pcl::registration::prepareTensorView (*input.cloud, input.viewpoint, preparation);
+            reports[i].meshes_computed = true;
+          }
+          input.cloud.reset ();
         }
         catch (const InvalidScanException&)
         {
           // Left to registration, which reports the view as unusable and says why.
         }
       });
-      ObjectDimensions dims;
-      dims.D = params.object_dimensions;
-      std::sort (dims.D.data (), dims.D.data () + 3, std::greater<> ());
-      if (!(dims.D.array () > 0.0).all ())
-      {
-        dims.D.setZero ();
-        for (const auto& v : views)
-          if (v)
-            dims.D = dims.D.cwiseMax (pcl::principalExtents (*v->scan->fine.cloud));  // Eq. 1, as registration takes it
-      }
-      pcl::detail::parallelFor (inputs.size (), threads, [&] (std::size_t i) {
+      const ObjectDimensions dims = dimensionsOf (views, params);
+      pcl::detail::parallelFor (count, threads, [&] (std::size_t i) {
         if (!views[i])
           return;
         try
         {
-          addCachedTensors (cache, ids[i], keys[i], dims, params.pairwise, *views[i], reports[i]);
+          if (cache)
+            addCachedTensors (*cache, reports[i].id, reports[i].key, dims, params.pairwise, *views[i], reports[i]);
+          else
+          {
+            views[i] = pcl::registration::withTensors (*views[i], dims, params.pairwise);
+            reports[i].tensors_computed = true;
+          }
         }
         catch (const InvalidScanException&)
         {
           // Registration computes them again and reports the view.
         }
         inputs[i].view = views[i];
-        inputs[i].cloud.reset ();
       });
       return reports;
     }

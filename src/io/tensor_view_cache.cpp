@@ -53,7 +53,8 @@ namespace pcl
     {
       if (!isValidViewId (view_id))
         PCL_TENSOR_THROW (pcl::BadArgumentException, "'" << view_id << "' cannot name a cache entry (see isValidViewId)");
-      const char* suffix = kind == CacheEntryKind::MESHES ? ".meshes.tvc" : kind == CacheEntryKind::TENSORS ? ".tensors.tvc" : ".pair.tvc";
+      const char* suffix = kind == CacheEntryKind::MESHES ? ".meshes.tvc" : kind == CacheEntryKind::TENSORS ? ".tensors.tvc"
+                         : kind == CacheEntryKind::PAIR ? ".pair.tvc" : ".run.tvc";
       return (std::filesystem::path (dir_) / (view_id + suffix)).string ();
     }
 

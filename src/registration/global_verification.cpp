@@ -24,11 +24,11 @@ namespace pcl
 
         /** Widen by \a points mapped by q = linear * p + offset. */
         void
-        add (const std::vector<Eigen::Vector3d>& points, const Eigen::Matrix3d& linear, const Eigen::Vector3d& offset)
+        add (const std::vector<Eigen::Vector3f>& points, const Eigen::Matrix3d& linear, const Eigen::Vector3d& offset)
         {
           for (const auto& p : points)
           {
-            const Eigen::Vector3d q = linear * p + offset;
+            const Eigen::Vector3d q = linear * p.cast<double> () + offset;
             low = low.cwiseMin (q);
             high = high.cwiseMax (q);
           }
@@ -58,30 +58,34 @@ namespace pcl
     GlobalVerification::single (const pcl::PointCloud<pcl::PointNormal>& cloud) const
     {
       GlobalVerification view (dims_, resolution_, params_);
-      view.points_.reserve (cloud.size ());
+      std::vector<Eigen::Vector3d> points;
+      points.reserve (cloud.size ());
       for (const auto& p : cloud)
         if (p.getVector3fMap ().allFinite ())
-          view.points_.push_back (p.getVector3fMap ().cast<double> ());
+          points.push_back (p.getVector3fMap ().cast<double> ());
       Moments& m = view.moments_;
-      m.count = static_cast<double> (view.points_.size ());
+      m.count = static_cast<double> (points.size ());
       Frame frame;
-      if (!view.points_.empty ())
+      if (!points.empty ())
       {
-        view.anchor_ = view.points_.front ();
+        view.anchor_ = points.front ();
         view.anchored_ = true;
         // Two passes, centroid first, so that the scatter does not lose digits to large coordinates.
-        for (const auto& p : view.points_)
+        for (const auto& p : points)
           m.mean += p;
         m.mean /= m.count;
-        for (const auto& p : view.points_)
+        for (const auto& p : points)
           m.scatter.noalias () += (p - m.mean) * (p - m.mean).transpose ();
+        view.points_.reserve (points.size ());
+        for (const auto& p : points)
+          view.points_.push_back ((p - view.anchor_).cast<float> ());
       }
-      if (view.points_.size () >= 3)
+      if (points.size () >= 3)
       {
         frame.valid = true;
         frame.axes = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> (m.scatter).eigenvectors ();
         Span span;
-        span.add (view.points_, frame.axes.transpose (), -frame.axes.transpose () * view.anchor_);
+        span.add (view.points_, frame.axes.transpose (), Eigen::Vector3d::Zero ());
         frame.low = span.low;
         frame.high = span.high;
       }
@@ -94,8 +98,8 @@ namespace pcl
     {
       const Eigen::Vector3d anchor = anchored_ ? anchor_ : pose * other.anchor_;
       Span span;
-      span.add (points_, axes.transpose (), -axes.transpose () * anchor);
-      span.add (other.points_, axes.transpose () * pose.linear (), axes.transpose () * (pose.translation () - anchor));
+      span.add (points_, axes.transpose (), Eigen::Vector3d::Zero ());
+      span.add (other.points_, axes.transpose () * pose.linear (), axes.transpose () * (pose * other.anchor_ - anchor));
       return span.extents ();
     }
 
@@ -133,7 +137,7 @@ namespace pcl
         if (f.valid)
         {
           Span span{f.low, f.high};
-          span.add (other.points_, f.axes.transpose () * r, f.axes.transpose () * (pose.translation () - anchor));
+          span.add (other.points_, f.axes.transpose () * r, f.axes.transpose () * (pose * other.anchor_ - anchor));
           excess = std::min (excess, dimensionExcess (span.extents (), dims_, checked));
         }
       for (const Frame& g : other.frames_)
@@ -141,7 +145,7 @@ namespace pcl
         {
           const Frame moved = movedFrame (g, other, pose);
           Span span{moved.low, moved.high};
-          span.add (points_, moved.axes.transpose (), -moved.axes.transpose () * anchor);
+          span.add (points_, moved.axes.transpose (), Eigen::Vector3d::Zero ());
           excess = std::min (excess, dimensionExcess (span.extents (), dims_, checked));
         }
       return excess / resolution_;
@@ -166,7 +170,7 @@ namespace pcl
         if (f.valid)
         {
           Span span{f.low, f.high};
-          span.add (other.points_, f.axes.transpose () * r, f.axes.transpose () * (pose.translation () - anchor_));
+          span.add (other.points_, f.axes.transpose () * r, f.axes.transpose () * (pose * other.anchor_ - anchor_));
           f.low = span.low;
           f.high = span.high;
         }
@@ -176,7 +180,7 @@ namespace pcl
         if (moved.valid)
         {
           Span span{moved.low, moved.high};
-          span.add (points_, moved.axes.transpose (), -moved.axes.transpose () * anchor_);
+          span.add (points_, moved.axes.transpose (), Eigen::Vector3d::Zero ());
           moved.low = span.low;
           moved.high = span.high;
         }
@@ -191,8 +195,9 @@ namespace pcl
         moments_.count = n;
       }
       points_.reserve (points_.size () + other.points_.size ());
+      const Eigen::Vector3d offset = pose * other.anchor_ - anchor_;
       for (const auto& p : other.points_)
-        points_.push_back (pose * p);
+        points_.push_back ((r * p.cast<double> () + offset).cast<float> ());
     }
 
     void

@@ -253,7 +253,8 @@ namespace pcl
 
     ViewPairs
     findOverlappingViews (const std::vector<const ScanMesh*>& views, const ViewPoses& poses, const std::vector<bool>& use,
-                          double resolution, double max_distance, double min_fraction, int sample_points, unsigned threads)
+                          double resolution, double max_distance, double min_fraction, int sample_points, unsigned threads,
+                          std::vector<double>* fractions)
     {
       const int n = static_cast<int> (views.size ());
       if (poses.size () != views.size () || (!use.empty () && use.size () != views.size ()))
@@ -269,7 +270,7 @@ namespace pcl
         for (int j = i + 1; j < n; ++j)
           if (icp_views[i].mesh && icp_views[j].mesh)
             candidates.emplace_back (i, j);
-      std::vector<char> overlapping (candidates.size (), 0);
+      std::vector<double> overlap (candidates.size (), 0.0);
       pcl::detail::parallelFor (candidates.size (), threads, [&] (std::size_t k) {
           const int i = candidates[k].first, j = candidates[k].second;
           // The smaller view's sample against the larger view.
@@ -283,12 +284,18 @@ namespace pcl
             const Eigen::Vector3f query = (a_to_b * (*a.mesh->cloud)[s].getVector3fMap ().cast<double> ()).cast<float> ();
             near += b.search->anyWithin (query, radius) ? 1 : 0;
           }
-          overlapping[k] = !a.sample.empty () && static_cast<double> (near) >= min_fraction * static_cast<double> (a.sample.size ());
+          overlap[k] = a.sample.empty () ? 0.0 : static_cast<double> (near) / static_cast<double> (a.sample.size ());
       });
       ViewPairs pairs;
+      if (fractions)
+        fractions->clear ();
       for (std::size_t k = 0; k < candidates.size (); ++k)
-        if (overlapping[k])
+        if (overlap[k] > 0.0 && overlap[k] >= min_fraction)
+        {
           pairs.push_back (candidates[k]);
+          if (fractions)
+            fractions->push_back (overlap[k]);
+        }
       return pairs;
     }
   }

@@ -76,6 +76,8 @@ namespace pcl
                           "must be 0 (no limit) or positive, got " << params.max_references << ", " << params.max_failed_pairs
                           << ", " << params.ranking.sample_tensors << ", " << params.first_pass_hypotheses << " and "
                           << params.second_pass_pairs);
+      if (params.max_overlap_pairs < 0)
+        PCL_TENSOR_THROW (BadArgumentException, "max_overlap_pairs must be 0 (all) or positive, got " << params.max_overlap_pairs);
       if (!(params.min_overlap >= 0.0 && params.min_overlap <= 1.0))
         PCL_TENSOR_THROW (BadArgumentException, "min_overlap must lie in [0, 1], got " << params.min_overlap);
       checkGlobalStepParams (params.global);
@@ -393,6 +395,37 @@ namespace pcl
           std::set<std::pair<int, int>> tried_;  ///< (reference, view) pairs already tried
       };
 
+      /** The pairs that overlap by min_overlap under the pairwise poses, each view's max_overlap_pairs
+        * most overlapping (a pair stays when it is among either view's): many views around an object
+        * overlap many others, and the global step's cost grows with its pairs, its accuracy hardly. */
+      ViewPairs
+      mostOverlapping (const MultiviewRegistrationParams& params, const std::vector<const ScanMesh*>& meshes,
+                       const ViewPoses& poses, const std::vector<bool>& member, double resolution, unsigned threads)
+      {
+        std::vector<double> fractions;
+        const ViewPairs found = findOverlappingViews (meshes, poses, member, resolution, params.global.max_distance,
+                                                      params.min_overlap, 500, threads, &fractions);
+        if (params.max_overlap_pairs <= 0)
+          return found;
+        std::vector<std::vector<std::pair<double, std::size_t>>> of_view (meshes.size ());
+        for (std::size_t k = 0; k < found.size (); ++k)
+        {
+          of_view[found[k].first].emplace_back (-fractions[k], k);
+          of_view[found[k].second].emplace_back (-fractions[k], k);
+        }
+        std::set<std::size_t> kept;
+        for (auto& list : of_view)
+        {
+          std::sort (list.begin (), list.end ());  // most overlapping first; ties: lower pair first
+          for (std::size_t r = 0; r < list.size () && r < static_cast<std::size_t> (params.max_overlap_pairs); ++r)
+            kept.insert (list[r].second);
+        }
+        ViewPairs pairs;
+        for (const std::size_t k : kept)
+          pairs.push_back (found[k]);
+        return pairs;
+      }
+
       /** The pairs of the global step within one component: registration's own, the loop, given
         * pairs, found overlaps. */
       ViewPairs
@@ -418,8 +451,7 @@ namespace pcl
         for (const auto& p : given)
           add (p.first, p.second);
         if (params.min_overlap > 0.0)
-          for (const auto& p : findOverlappingViews (meshes, poses, member, result.resolution, params.global.max_distance,
-                                                     params.min_overlap, 500, threads))
+          for (const auto& p : mostOverlapping (params, meshes, poses, member, result.resolution, threads))
             add (p.first, p.second);
         return ViewPairs (pairs.begin (), pairs.end ());
       }

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 
 namespace pcl
 {
@@ -64,6 +65,23 @@ namespace pcl
                         << elevation_deg);
     ViewDirections d;
     appendRing (d, count, step_deg, elevation_deg, up);
+    return d;
+  }
+
+  ViewDirections
+  makeRandomViewDirections (int count, std::uint32_t seed)
+  {
+    if (count < 0)
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "a view set cannot have " << count << " views");
+    std::mt19937 rng (seed);
+    std::normal_distribution<double> gauss;
+    ViewDirections d;
+    while (static_cast<int> (d.size ()) < count)
+    {
+      const Eigen::Vector3d v (gauss (rng), gauss (rng), gauss (rng));
+      if (v.norm () > 1e-6)
+        d.push_back (v.normalized ());
+    }
     return d;
   }
 

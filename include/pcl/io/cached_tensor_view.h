@@ -7,6 +7,7 @@
 #include <pcl/io/tensor_view_cache.h>
 #include <pcl/registration/multiview_tensor_registration.h>
 
+#include <functional>
 #include <vector>
 
 namespace pcl
@@ -44,20 +45,25 @@ namespace pcl
                       const ObjectDimensions& dims, const pcl::registration::TensorRegistrationParams& params,
                       pcl::registration::TensorView& view, CachedViewReport& report);
 
-    /** \brief Views to register, each from \a cache or computed and stored there: meshes, then D
-      * (params.object_dimensions when given, else Eq. 1 over all the views' meshes, as
-      * MultiviewTensorRegistration takes it), then tensors, on \a threads threads (0: every core).
-      * Each input names its file (MultiviewInput::name) and holds its cloud and viewpoint; on return
-      * it holds its prepared view, and its cloud is released. A view that cannot be meshed keeps its
-      * cloud, and registration reports why.
-      * \return what the cache held for each view */
+    /** \brief Loads view \a i of a set: its name (its file), cloud and viewpoint. Called from several threads. */
+    using MultiviewInputLoader = std::function<pcl::registration::MultiviewInput (std::size_t i)>;
+
+    /** \brief The \a count views of a set ready to register, on \a threads threads (0: every core): each
+      * loaded, its meshes (prepareTensorView()) taken from \a cache when VALID or computed (and stored
+      * when \a cache is given), then D (params.object_dimensions when given, else Eq. 1 over all the
+      * views, as MultiviewTensorRegistration takes it), then its tensors likewise. A view's cloud is
+      * released once it is meshed, so the set's raw scans are never all in memory at once; a view that
+      * cannot be meshed keeps its cloud, and registration reports why.
+      * \param[out] inputs the views, each with its prepared view (MultiviewInput::view)
+      * \return what the cache held for each view (all MISSING without a cache) */
     std::vector<CachedViewReport>
-    prepareCachedViews (const TensorViewCache& cache, std::vector<pcl::registration::MultiviewInput>& inputs,
-                        const pcl::registration::MultiviewRegistrationParams& params, unsigned threads = 0);
+    prepareMultiviewInputs (std::size_t count, const MultiviewInputLoader& load,
+                            const pcl::registration::MultiviewRegistrationParams& params, unsigned threads,
+                            const TensorViewCache* cache, std::vector<pcl::registration::MultiviewInput>& inputs);
 
     /** \brief Pair registrations answered from \a cache when a VALID entry exists for both views' keys,
       * D and the settings (pairCacheKey()), else registered (registerTensorViews()) and stored, for
-      * MultiviewTensorRegistration::setPairRegistration(). \a views: prepareCachedViews()' reports, in
+      * MultiviewTensorRegistration::setPairRegistration(). \a views: prepareMultiviewInputs()' reports, in
       * the order of the views; \a cache must outlive the returned function. */
     pcl::registration::ViewPairRegistration
     cachedPairRegistration (const TensorViewCache& cache, const std::vector<CachedViewReport>& views);

@@ -34,7 +34,9 @@ namespace pcl
       /** The tensors of M'_i, with the D and the hashTensorParameters() they were computed with. */
       TENSORS = 2,
       /** A pairwise registration of two views (TensorRegistrationReport), keyed by pairCacheKey(). */
-      PAIR = 3
+      PAIR = 3,
+      /** A whole run of pcl_tensor_model (ModelRunRecord), keyed by modelRunKey(). */
+      RUN = 4
     };
 
     /** \brief What a lookup found. Only VALID gives data; any other state leaves the output untouched.

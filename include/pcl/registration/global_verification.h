@@ -105,11 +105,13 @@ namespace pcl
         ObjectDimensions dims_;
         double resolution_;
         GlobalVerificationParams params_;
-        std::vector<Eigen::Vector3d> points_;
+        /** The registered points, in the common frame relative to anchor_: floats, since they are
+          * kept for every view (a fine mesh's worth each). */
+        std::vector<Eigen::Vector3f> points_;
         std::vector<Frame> frames_;
         Moments moments_;
-        /** The first finite point: extents are measured from it, which keeps the digits that large
-          * coordinates would take. */
+        /** The first finite point: points and extents are measured from it, which keeps the digits that
+          * large coordinates would take. */
         Eigen::Vector3d anchor_ = Eigen::Vector3d::Zero ();
         bool anchored_ = false;
     };

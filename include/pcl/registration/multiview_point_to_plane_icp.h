@@ -90,11 +90,12 @@ namespace pcl
       * \param[in] min_fraction overlap needed, in (0, 1]
       * \param[in] sample_points points sampled per view
       * \param[in] threads threads for the pairs (0: every core)
+      * \param[out] fractions if given, each returned pair's overlap fraction
       * \return pairs (i < j), sorted
       */
     ViewPairs
     findOverlappingViews (const std::vector<const ScanMesh*>& views, const ViewPoses& poses, const std::vector<bool>& use,
                           double resolution, double max_distance, double min_fraction, int sample_points = 500,
-                          unsigned threads = 1);
+                          unsigned threads = 1, std::vector<double>* fractions = nullptr);
   }
 }

@@ -110,6 +110,9 @@ namespace pcl
       /** Besides the pairs that registration used (and the loop), the global step uses every pair
         * of registered views that overlaps by at least this fraction under the pairwise poses (0: none). */
       double min_overlap = 0.3;
+      /** ... of those, each view's this many most overlapping (0: all); a pair stays when it is among
+        * either view's. The global step's cost grows with its pairs. */
+      int max_overlap_pairs = 6;
     };
 
     /** \brief Check every parameter of \a params before any view is read: the pairwise ones

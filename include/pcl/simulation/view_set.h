@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include <utility>
+#include <cstdint>
 #include <vector>
 
 namespace pcl
@@ -45,6 +46,14 @@ namespace pcl
   ViewDirections
   makeRingViewDirections (int count, double step_deg, double elevation_deg = 0.0,
                           const Eigen::Vector3d& up = Eigen::Vector3d::UnitY ());
+
+  /** \brief \a count directions uniform on the sphere (std::mt19937 of \a seed, normalised Gaussian
+    * vectors): views from anywhere, as a hand-held scanner takes them.
+    * \throw pcl::BadArgumentException on count < 0
+    * \ingroup simulation
+    */
+  ViewDirections
+  makeRandomViewDirections (int count, std::uint32_t seed);
 
   /** \brief The sphere that a view set's sensors look at: the centre of the mesh's bounding box and
     * the largest distance from it to a vertex.
