@@ -6,10 +6,12 @@
 #include <pcl/search/bounded_nearest_search.h>
 #include "../common/parallel_for.h"
 
-#include <Eigen/Cholesky>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 namespace pcl
@@ -110,10 +112,15 @@ namespace pcl
         }
       }
 
-      /** The normal equations of all poses together, over the unknowns of the moving views. */
+      /** The normal equations of all poses together, over the unknowns of the moving views: sparse,
+        * since each pair couples two views only, so that the solve grows with the pairs, not with the
+        * cube of the views (a dense 6N x 6N factorisation dominated the step at 200 views). */
       struct JointSystem
       {
-        Eigen::MatrixXd h;
+        explicit JointSystem (int unknowns) : size (6 * unknowns), g (Eigen::VectorXd::Zero (6 * unknowns)) {}
+
+        int size;
+        std::vector<Eigen::Triplet<double>> h;
         Eigen::VectorXd g;
         std::size_t pairs = 0;
         double sum2 = 0.0;
@@ -130,10 +137,28 @@ namespace pcl
             g.segment<6> (6 * vars[u]) += pair.g.segment<6> (6 * u);
             for (int w = 0; w < 2; ++w)
               if (vars[w] >= 0)
-                h.block<6, 6> (6 * vars[u], 6 * vars[w]) += pair.h.block<6, 6> (6 * u, 6 * w);
+                for (int r = 0; r < 6; ++r)
+                  for (int c = 0; c < 6; ++c)
+                    h.emplace_back (6 * vars[u] + r, 6 * vars[w] + c, pair.h (6 * u + r, 6 * w + c));
           }
           sum2 += pair.sum2;
           pairs += pair.pairs;
+        }
+
+        /** The small motions of all moving views (NaN when the system cannot be solved). A view left
+          * without pairs would make it singular: a tiny damping keeps it still. */
+        Eigen::VectorXd
+        solve () const
+        {
+          Eigen::SparseMatrix<double> m (size, size);
+          m.setFromTriplets (h.begin (), h.end ());
+          const double damping = 1e-9 * std::max (m.diagonal ().maxCoeff (), 1e-12);
+          for (int i = 0; i < size; ++i)
+            m.coeffRef (i, i) += damping;
+          const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt (m);
+          if (ldlt.info () != Eigen::Success)
+            return Eigen::VectorXd::Constant (size, std::numeric_limits<double>::quiet_NaN ());
+          return ldlt.solve (g);
         }
       };
 
@@ -208,9 +233,7 @@ namespace pcl
       const double min_cos = std::cos (params.max_normal_angle * M_PI / 180.0);
       for (int it = 0; it < params.max_iterations && unknowns > 0; ++it)
       {
-        JointSystem system;
-        system.h = Eigen::MatrixXd::Zero (6 * unknowns, 6 * unknowns);
-        system.g = Eigen::VectorXd::Zero (6 * unknowns);
+        JointSystem system (unknowns);
         std::vector<PairSystem> pair_systems (pairs.size ());
         pcl::detail::parallelFor (pairs.size (), threads, [&] (std::size_t k) {
           const int i = pairs[k].first, j = pairs[k].second;
@@ -227,8 +250,7 @@ namespace pcl
         result.rms_after = rms;
         result.pairs = system.pairs;
         // A view left without pairs would make the system singular: a tiny damping keeps it still.
-        system.h.diagonal ().array () += 1e-9 * std::max (system.h.diagonal ().maxCoeff (), 1e-12);
-        const Eigen::VectorXd x = system.h.ldlt ().solve (system.g);
+        const Eigen::VectorXd x = system.solve ();
         if (!x.allFinite ())
           break;
         double max_rotation = 0.0, max_translation = 0.0;
