@@ -2,6 +2,7 @@
 
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/registration/global_verification.h>
+#include <cmath>
 #include <random>
 
 namespace
@@ -131,7 +132,24 @@ TEST (GlobalVerification, ExcessEqualsTheDirectComputationOverAllPoints)
     starts = with_starts;
   }
   EXPECT_EQ (verification.views (), 6u);
+  // A cap of a sphere is its own convex hull's boundary: every point is kept.
   EXPECT_EQ (verification.size (), points.size ());
+}
+
+TEST (GlobalVerification, AViewKeepsTheVerticesOfItsConvexHull)
+{
+  // A plate with a bump: the points inside the plate's outline are not on the hull, and are not kept;
+  // the extents are the plate's, as over all points.
+  auto view = plate (0.2, 0.1, 0.005);
+  for (auto& p : view)
+    p.z = static_cast<float> (0.01 * std::exp (-((p.x - 0.1) * (p.x - 0.1) + (p.y - 0.05) * (p.y - 0.05)) / 0.001));
+  pcl::ObjectDimensions dims;
+  dims.D = Eigen::Vector3d (0.2, 0.1, 0.01);
+  GlobalVerification verification (dims, 0.001);
+  verification.addView (view, Eigen::Affine3d::Identity ());
+  EXPECT_LT (verification.size (), view.size () / 2);
+  EXPECT_GT (verification.size (), 4u);
+  EXPECT_NEAR (verification.excess (view, shiftX (0.003)), 3.0, 1e-3);
 }
 
 TEST (GlobalVerification, MergingGroupsEqualsAddingTheirViewsOneByOne)
@@ -164,6 +182,6 @@ TEST (GlobalVerification, MergingGroupsEqualsAddingTheirViewsOneByOne)
   merged.merge (b, b_to_a);
   EXPECT_NEAR (merged.excess (probe, Eigen::Affine3d::Identity ()), expected, 1e-3);
   EXPECT_NEAR (a.excess (b, b_to_a), b.excess (a, b_to_a.inverse ()), 1e-3);
-  EXPECT_EQ (merged.size (), all.size ());
+  EXPECT_EQ (merged.size (), all.size ()) << "the same hull vertices, however the views were grouped";
   EXPECT_EQ (merged.views (), 5u);
 }

@@ -4,6 +4,8 @@
 #include <pcl/registration/global_verification.h>
 #include <pcl/common/tensor_exceptions.h>
 
+#include <pcl/surface/convex_hull.h>
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -54,6 +56,35 @@ namespace pcl
         PCL_TENSOR_THROW (BadArgumentException, "global verification needs a positive resolution and a non-negative tolerance");
     }
 
+    namespace
+    {
+      /** The vertices of the convex hull of \a points (relative coordinates): extents along any axes are
+        * taken at them, so a group keeps a few hundred points per view instead of all of them. All
+        * points when the hull cannot be made: fewer than four, or \a flat (all in a plane). */
+      std::vector<Eigen::Vector3f>
+      hullVertices (const std::vector<Eigen::Vector3f>& points, bool flat)
+      {
+        if (points.size () < 4 || flat)
+          return points;
+        pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
+        cloud->reserve (points.size ());
+        for (const auto& p : points)
+          cloud->push_back (pcl::PointXYZ (p.x (), p.y (), p.z ()));
+        pcl::ConvexHull<pcl::PointXYZ> hull;
+        hull.setInputCloud (cloud);
+        hull.setDimension (3);
+        pcl::PointCloud<pcl::PointXYZ> vertices;
+        hull.reconstruct (vertices);
+        if (vertices.size () < 4)
+          return points;
+        std::vector<Eigen::Vector3f> out;
+        out.reserve (vertices.size ());
+        for (const auto& v : vertices)
+          out.push_back (v.getVector3fMap ());
+        return out;
+      }
+    }
+
     GlobalVerification
     GlobalVerification::single (const pcl::PointCloud<pcl::PointNormal>& cloud) const
     {
@@ -76,9 +107,12 @@ namespace pcl
         m.mean /= m.count;
         for (const auto& p : points)
           m.scatter.noalias () += (p - m.mean) * (p - m.mean).transpose ();
-        view.points_.reserve (points.size ());
+        std::vector<Eigen::Vector3f> relative;
+        relative.reserve (points.size ());
         for (const auto& p : points)
-          view.points_.push_back ((p - view.anchor_).cast<float> ());
+          relative.push_back ((p - view.anchor_).cast<float> ());
+        const Eigen::Vector3d spread = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> (m.scatter).eigenvalues ();
+        view.points_ = hullVertices (relative, !(spread.minCoeff () > 1e-12 * spread.maxCoeff ()));
       }
       if (points.size () >= 3)
       {

@@ -64,7 +64,7 @@ namespace pcl
           return excess (cloud, pose) <= params_.tolerance;
         }
 
-        /** \brief Points of the registered views so far, in the common frame. */
+        /** \brief Points kept of the registered views so far: the vertices of each view's convex hull. */
         std::size_t size () const { return points_.size (); }
 
         /** \brief Registered views so far. */
@@ -105,8 +105,8 @@ namespace pcl
         ObjectDimensions dims_;
         double resolution_;
         GlobalVerificationParams params_;
-        /** The registered points, in the common frame relative to anchor_: floats, since they are
-          * kept for every view (a fine mesh's worth each). */
+        /** The registered views' convex hull vertices (extents along any axes are taken at them), in the
+          * common frame relative to anchor_. */
         std::vector<Eigen::Vector3f> points_;
         std::vector<Frame> frames_;
         Moments moments_;
