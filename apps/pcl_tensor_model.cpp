@@ -354,8 +354,12 @@ namespace
         return replay (record, o);
     }
     std::vector<pcl::registration::MultiviewInput> inputs;
+    const pcl::registration::MultiviewProgress show = [&progress] (pcl::registration::MultiviewStage stage, std::size_t done,
+                                                                   std::size_t n) {
+      progress.update (pcl::registration::toString (stage), done, n);
+    };
     const auto prepared = pcl::io::prepareMultiviewInputs (o.views.size (), viewLoader (o.views, argc, argv), o.registration,
-                                                           o.threads, cache.get (), inputs);
+                                                           o.threads, cache.get (), inputs, show);
     // Pairs from the cache (or registered and kept there), and from results computed elsewhere first.
     pcl::registration::ViewPairRegistration pairs = [] (int, int, const auto& model, const auto& scene, const auto& dims,
                                                         const auto& params) {
@@ -377,9 +381,7 @@ namespace
     t.preparation_ms = timer.toc ();
     if (!o.pairs.empty ())
       registration.setPairs (pcl::io::loadViewPairs (o.pairs, o.views));
-    registration.setProgressCallback ([&progress] (pcl::registration::MultiviewStage stage, std::size_t done, std::size_t n) {
-      progress.update (pcl::registration::toString (stage), done, n);
-    });
+    registration.setProgressCallback (show);
     const auto result = registration.compute (inputs);
 
     timer.tic ();

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <mutex>
 
 namespace pcl
 {
@@ -79,8 +80,18 @@ namespace pcl
     std::vector<CachedViewReport>
     prepareMultiviewInputs (std::size_t count, const MultiviewInputLoader& load,
                             const pcl::registration::MultiviewRegistrationParams& params, unsigned threads,
-                            const TensorViewCache* cache, std::vector<pcl::registration::MultiviewInput>& inputs)
+                            const TensorViewCache* cache, std::vector<pcl::registration::MultiviewInput>& inputs,
+                            const pcl::registration::MultiviewProgress& progress)
     {
+      using pcl::registration::MultiviewStage;
+      std::mutex mutex;
+      std::size_t done = 0;
+      const auto step = [&] (MultiviewStage stage) {
+        if (!progress)
+          return;
+        const std::lock_guard<std::mutex> lock (mutex);
+        progress (stage, ++done, count);
+      };
       const auto& preparation = params.pairwise.preparation;
       std::vector<CachedViewReport> reports (count);
       std::vector<pcl::registration::TensorView::Ptr> views (count);
@@ -108,8 +119,10 @@ namespace pcl
         {
           // Left to registration, which reports the view as unusable and says why.
         }
+        step (MultiviewStage::PREPARATION);
       });
       const ObjectDimensions dims = dimensionsOf (views, params);
+      done = 0;
       pcl::detail::parallelFor (count, threads, [&] (std::size_t i) {
         if (!views[i])
           return;
@@ -128,6 +141,7 @@ namespace pcl
           // Registration computes them again and reports the view.
         }
         inputs[i].view = views[i];
+        step (MultiviewStage::TENSORS);
       });
       return reports;
     }

@@ -60,3 +60,20 @@ if(Python3_Interpreter_FOUND)
 else()
   message(STATUS "SKIPPED app_model_json_names: no python3 to check the JSON with")
 endif()
+
+# --cache: a re-run with nothing new is replayed, one whose outputs changed is made again, the same poses.
+add_test(NAME app_model_cache_rerun
+  COMMAND ${CMAKE_COMMAND} -DAPP=${MODEL} "-DVIEWS=${REG_VIEWS}/view_00.ply;${REG_VIEWS}/view_01.ply;${REG_VIEWS}/view_02.ply"
+    -DOUT=${MODEL_OUT}/cache_rerun -P ${CMAKE_CURRENT_SOURCE_DIR}/model_cache.cmake)
+set_tests_properties(app_model_cache_rerun PROPERTIES FIXTURES_REQUIRED register_views TIMEOUT 900)
+
+# Two views of each of two objects: two models (the second beside the first as NAME_part2), exit 3 and
+# one line per view of the second model naming it.
+add_test(NAME app_model_two_objects_two_models
+  COMMAND ${MODEL} ${REG_VIEWS}/view_00.ply ${OTHER_VIEWS}/view_00.ply ${REG_VIEWS}/view_01.ply ${OTHER_VIEWS}/view_01.ply
+          --viewpoint 0,0,0 -o ${MODEL_OUT}/two.ply)
+set_tests_properties(app_model_two_objects_two_models PROPERTIES FIXTURES_REQUIRED "register_views;other_views" TIMEOUT 900
+  PASS_REGULAR_EXPRESSION "in a separate model: [^\n]*model_other_views/view_00.ply: [^\n]*two_part2.ply\npcl_tensor_model: in a separate model: [^\n]*model_other_views/view_01.ply: [^\n]*two_part2.ply")
+pcl_tensor_case(app_model_missing_pairs_results 2 COMMAND ${MODEL} ${VIEW0} ${VIEW1} -o ${MODEL_OUT}/r.ply
+                --pairs-results /nonexistent/results.jsonl)
+pcl_tensor_case(app_model_cache_is_a_file 2 COMMAND ${MODEL} ${VIEW0} ${VIEW1} -o ${MODEL_OUT}/c.ply --cache ${VIEW0})

@@ -55,11 +55,14 @@ namespace pcl
       * released once it is meshed, so the set's raw scans are never all in memory at once; a view that
       * cannot be meshed keeps its cloud, and registration reports why.
       * \param[out] inputs the views, each with its prepared view (MultiviewInput::view)
+      * \param[in] progress called as views are meshed (PREPARATION) and their tensors computed (TENSORS),
+      *            one call at a time
       * \return what the cache held for each view (all MISSING without a cache) */
     std::vector<CachedViewReport>
     prepareMultiviewInputs (std::size_t count, const MultiviewInputLoader& load,
                             const pcl::registration::MultiviewRegistrationParams& params, unsigned threads,
-                            const TensorViewCache* cache, std::vector<pcl::registration::MultiviewInput>& inputs);
+                            const TensorViewCache* cache, std::vector<pcl::registration::MultiviewInput>& inputs,
+                            const pcl::registration::MultiviewProgress& progress = {});
 
     /** \brief Pair registrations answered from \a cache when a VALID entry exists for both views' keys,
       * D and the settings (pairCacheKey()), else registered (registerTensorViews()) and stored, for
