@@ -18,7 +18,9 @@ if [ "${1:-}" = "--ci" ]; then
   selection=(-R '^Hardening|_bad_|_param|coplanar|no_faces|^app_register_make_views$|^app_make_bad_inputs$')
 else
   cmake --build build-sanitize -j2
-  selection=(-E '^downstream_find_package$')
+  # The two-object and cached re-run app tests repeat, as whole runs, what TwoObjectsMakeTwoComponents
+  # and CachedViewsRegisterAsTheFirstRunDid check under the sanitizers; left out to keep CI near 50 min.
+  selection=(-E '^(downstream_find_package|app_model_two_objects_two_models|app_model_cache_rerun)$')
 fi
 source scripts/sanitizer_env.sh
 cd build-sanitize
