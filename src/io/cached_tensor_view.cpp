@@ -69,11 +69,12 @@ namespace pcl
         std::sort (dims.D.data (), dims.D.data () + 3, std::greater<> ());
         if ((dims.D.array () > 0.0).all ())
           return dims;
-        dims.D.setZero ();
+        std::vector<const pcl::PointCloud<pcl::PointNormal>*> fine;
         for (const auto& v : views)
           if (v)
-            dims.D = dims.D.cwiseMax (pcl::principalExtents (*v->scan->fine.cloud));
-        return dims;
+            fine.push_back (v->scan->fine.cloud.get ());
+        // The function registration itself uses, so that the tensors' D is its D bit for bit.
+        return fine.empty () ? ObjectDimensions () : computeObjectDimensions<pcl::PointNormal> (fine);
       }
     }
 
