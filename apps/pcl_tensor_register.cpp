@@ -42,6 +42,9 @@ namespace
                 d.scene_tensor_batches);
     print_info ("  --ambiguity-checks N  hypotheses verified after one passes, looking for a second pose (default %d)\n",
                 d.ambiguity_checks);
+    print_info ("  --no-rival-probe   do not probe the rival poses a verified pose leaves open (default: probe)\n");
+    print_info ("  --dims-fraction F  fine dimension check: allowed excess over D as a fraction of mean(D), at least\n"
+                "                     2 d_res (0: the paper's 2 d_res alone; default %g)\n", d.verification.fine_dimension_fraction);
     print_info ("  --nc F             n_c as a fraction of the smaller view (default %g)\n", d.verification.correspondence_fraction);
     print_info ("  --count both|scene views whose correspondences verification counts (default %s)\n",
                 d.verification.count_both_views ? "both" : "scene");
@@ -63,6 +66,8 @@ namespace
     parse_argument (argc, argv, "--scene-batches", p.scene_tensor_batches);
     parse_argument (argc, argv, "--nc", p.verification.correspondence_fraction);
     parse_argument (argc, argv, "--ambiguity-checks", p.ambiguity_checks);
+    p.probe_rivals = !find_switch (argc, argv, "--no-rival-probe");
+    parse_argument (argc, argv, "--dims-fraction", p.verification.fine_dimension_fraction);
     std::string order = "best";
     parse_argument (argc, argv, "--order", order);
     if (order == "scene")

@@ -185,6 +185,7 @@ TEST (MultiviewTensorRegistration, GlobalVerificationRefusalMovesOnToTheNextMatc
   const auto& views = exampleRing ();
   TensorRegistrationParams params;
   params.scene_tensor_batches = 1;
+  params.probe_rivals = false;  // the acceptor is asked about each probed rival that passes too
   const auto model = prepareTensorView (*views[0].view.cloud, views[0].view.viewpoint, params.preparation);
   const auto scene = prepareTensorView (*views[1].view.cloud, views[1].view.viewpoint, params.preparation);
   const auto dims = pcl::computeObjectDimensions<pcl::PointNormal> ({model->scan->fine.cloud.get (), scene->scan->fine.cloud.get ()});

@@ -112,3 +112,36 @@ TEST (RangeViewProjection, BadArgumentsAreRefused)
   pcl::ScanMesh empty;
   EXPECT_THROW (pcl::RangeViewProjection (empty, 3.0), pcl::InvalidScanException);
 }
+
+// Lines of sight around the view, clear of its surface by the margin, are seen empty; those through
+// the surface, near its rim, through a hole it encloses, or outside the view's extent are not.
+TEST (RangeViewProjection, EmptySpaceIsTheBackgroundAroundTheView)
+{
+  // Two 41 x 15 mm strips, 20 mm apart, joined at one end: a U whose inside is background. A hole in
+  // the joining part is enclosed by surface.
+  pcl::PointCloud<pcl::PointXYZ> cloud (41, 55);
+  const float nan = std::numeric_limits<float>::quiet_NaN ();
+  for (int r = 0; r < 55; ++r)
+    for (int c = 0; c < 41; ++c)
+    {
+      const bool inside_u = r >= 15 && r < 35 && c >= 10;
+      const bool hole = r >= 20 && r < 30 && c >= 2 && c < 7;
+      cloud.at (c, r) = inside_u || hole ? pcl::PointXYZ (nan, nan, nan) : pcl::PointXYZ (1e-3f * c, 1e-3f * r, 0.0f);
+    }
+  cloud.is_dense = false;
+  pcl::RangeScanTriangulation triangulation;
+  triangulation.setViewpoint (pcl::ScanViewpoint::fromPositiveZ ());
+  pcl::ScanMesh mesh;
+  triangulation.triangulate (cloud, mesh);
+  pcl::RangeViewProjection projection (mesh, 3.0, 2.0);  // 2 pixels per mm
+  const Eigen::Vector3f inside (0.03f, 0.025f, 0.005f);
+  EXPECT_FALSE (projection.seenEmpty (inside)) << "nothing is empty before markEmptySpace()";
+  projection.markEmptySpace (4);  // 2 mm
+  EXPECT_TRUE (projection.seenEmpty (inside));
+  EXPECT_TRUE (projection.seenEmpty (Eigen::Vector3f (0.035f, 0.022f, -0.01f))) << "at any depth along the line of sight";
+  EXPECT_FALSE (projection.seenEmpty (Eigen::Vector3f (0.03f, 0.0155f, 0.0f))) << "within the margin of the rim";
+  EXPECT_FALSE (projection.seenEmpty (Eigen::Vector3f (0.03f, 0.005f, 0.0f))) << "on the surface";
+  EXPECT_FALSE (projection.seenEmpty (Eigen::Vector3f (0.0045f, 0.025f, 0.0f))) << "in a hole the surface encloses";
+  EXPECT_FALSE (projection.seenEmpty (Eigen::Vector3f (0.06f, 0.025f, 0.0f))) << "outside the view's extent";
+  EXPECT_THROW (projection.markEmptySpace (-1), pcl::BadArgumentException);
+}

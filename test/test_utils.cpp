@@ -189,4 +189,48 @@ namespace pcl_tensor_test
     std::nth_element (values.begin (), values.begin () + values.size () / 2, values.end ());
     return values[values.size () / 2];
   }
+
+  pcl::ScanMesh
+  sweptMesh (const std::function<double (double)>& radius, double h, const std::function<double (const Eigen::Vector3d&)>& bump,
+             int rings, int sectors)
+  {
+    pcl::ScanMesh mesh;
+    for (int i = 0; i < rings; ++i)
+      for (int j = 0; j < sectors; ++j)
+      {
+        const double y = -h + 2.0 * h * i / (rings - 1), a = 2.0 * M_PI * j / sectors;
+        const Eigen::Vector3d out (std::cos (a), 0.0, std::sin (a));
+        Eigen::Vector3d p = radius (y) * out + y * Eigen::Vector3d::UnitY ();
+        p += bump (p) * out;
+        pcl::PointNormal v;
+        v.getVector3fMap () = p.cast<float> ();
+        mesh.cloud->push_back (v);
+      }
+    const auto index = [sectors] (int i, int j) { return i * sectors + (j % sectors); };
+    for (int i = 0; i + 1 < rings; ++i)
+      for (int j = 0; j < sectors; ++j)
+      {
+        pcl::Vertices a, b;
+        a.vertices = {index (i, j), index (i + 1, j), index (i, j + 1)};
+        b.vertices = {index (i, j + 1), index (i + 1, j), index (i + 1, j + 1)};
+        mesh.polygons.push_back (a);
+        mesh.polygons.push_back (b);
+      }
+    // Close both ends with a fan about the axis.
+    for (const int i : {0, rings - 1})
+    {
+      pcl::PointNormal centre;
+      centre.getVector3fMap () = Eigen::Vector3f (0.0f, i == 0 ? -h : h, 0.0f);
+      mesh.cloud->push_back (centre);
+      const auto c = static_cast<int> (mesh.cloud->size () - 1);
+      for (int j = 0; j < sectors; ++j)
+      {
+        pcl::Vertices f;
+        f.vertices = i == 0 ? pcl::Indices{c, index (i, j), index (i, j + 1)} : pcl::Indices{c, index (i, j + 1), index (i, j)};
+        mesh.polygons.push_back (f);
+      }
+    }
+    return mesh;
+  }
+
 }

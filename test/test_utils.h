@@ -58,12 +58,22 @@ namespace pcl_tensor_test
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
+#include <functional>
+
 #include <vector>
 
 namespace pcl_tensor_test
 {
   /** \brief The ten raw Stanford bunny scans, relative to ../shared/data. */
   const std::vector<std::string>& bunnyScanNames ();
+
+  /** A closed surface swept about the y axis: radius \a radius(y) over y in [-h, h], on a grid of
+    * \a rings x \a sectors vertices, each moved along its outward direction by \a bump(point); both
+    * ends closed by a fan. Surfaces of revolution (and, through \a bump, objects that are nearly so)
+    * with exact geometry, for known-answer tests of symmetric objects. */
+  pcl::ScanMesh
+  sweptMesh (const std::function<double (double)>& radius, double h, const std::function<double (const Eigen::Vector3d&)>& bump,
+             int rings = 120, int sectors = 240);
 
   /** \brief An organized height field z = f(x, y) of rows x cols samples on a pitch, with smooth random
     * bumps and NaN holes, seeded: a synthetic range image of known geometry for stress tests.

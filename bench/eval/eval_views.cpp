@@ -36,8 +36,14 @@ namespace pcl_tensor_eval
   EvalViews
   makeSyntheticViews (const pcl::ScanMesh& mesh, const pcl::SyntheticViewParams& params)
   {
+    return makeSyntheticViews (mesh, params, pcl::makeDefaultViewDirections (params.up));
+  }
+
+  EvalViews
+  makeSyntheticViews (const pcl::ScanMesh& mesh, const pcl::SyntheticViewParams& params, const pcl::ViewDirections& directions)
+  {
     EvalViews views;
-    const auto rendered = pcl::renderSyntheticViews (mesh, pcl::makeDefaultViewDirections (params.up), params);
+    const auto rendered = pcl::renderSyntheticViews (mesh, directions, params);
     for (std::size_t i = 0; i < rendered.size (); ++i)
     {
       EvalView v;

@@ -9,6 +9,7 @@
 #include <pcl/registration/correspondence_rejection_tensor_verification.h>
 #include <pcl/registration/tensor_registration.h>
 #include <pcl/simulation/synthetic_views.h>
+#include <pcl/simulation/view_set.h>
 #include <pcl/surface/scan_preparation.h>
 
 #include <Eigen/Geometry>
@@ -48,6 +49,10 @@ namespace pcl_tensor_eval
   /** \brief The synthetic views of \a mesh from the 26 default directions (Sections 6 and 7.1). */
   EvalViews
   makeSyntheticViews (const pcl::ScanMesh& mesh, const pcl::SyntheticViewParams& params);
+
+  /** \brief The synthetic views of \a mesh from \a directions (e.g. pcl::makeRingViewDirections()). */
+  EvalViews
+  makeSyntheticViews (const pcl::ScanMesh& mesh, const pcl::SyntheticViewParams& params, const pcl::ViewDirections& directions);
 
   /** \brief Prepare every view (M_i, M'_i), compute D from all of them (Eq. 1), then each view's
     * tensors once: what a multiview session does before registering pairs.

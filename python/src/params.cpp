@@ -76,15 +76,16 @@ namespace pcl_tensor_python
       using V = pcl::registration::TensorVerificationParams;
       bindStruct<V> (m, "VerificationParams", "Local verification (Section 4.1); C++ pcl::registration::TensorVerificationParams.",
                      {"coarse_dimension_fraction", "correspondence_fraction", "coarse_distance", "count_both_views",
-                      "fine_distance", "fine_dimension_tolerance", "checked_dimensions", "icp_iterations", "icp_max_distance",
-                      "icp_final_distance", "icp_coarse_stage_step", "sample_points", "free_space_distance",
-                      "free_space_fraction"})
+                      "fine_distance", "fine_dimension_tolerance", "fine_dimension_fraction", "checked_dimensions",
+                      "icp_iterations", "icp_max_distance", "icp_final_distance", "icp_coarse_stage_step", "sample_points",
+                      "free_space_distance", "free_space_fraction", "empty_space_margin"})
         .def_readwrite ("coarse_dimension_fraction", &V::coarse_dimension_fraction)
         .def_readwrite ("correspondence_fraction", &V::correspondence_fraction)
         .def_readwrite ("coarse_distance", &V::coarse_distance)
         .def_readwrite ("count_both_views", &V::count_both_views)
         .def_readwrite ("fine_distance", &V::fine_distance)
         .def_readwrite ("fine_dimension_tolerance", &V::fine_dimension_tolerance)
+        .def_readwrite ("fine_dimension_fraction", &V::fine_dimension_fraction)
         .def_readwrite ("checked_dimensions", &V::checked_dimensions)
         .def_readwrite ("icp_iterations", &V::icp_iterations)
         .def_readwrite ("icp_max_distance", &V::icp_max_distance)
@@ -92,14 +93,15 @@ namespace pcl_tensor_python
         .def_readwrite ("icp_coarse_stage_step", &V::icp_coarse_stage_step)
         .def_readwrite ("sample_points", &V::sample_points)
         .def_readwrite ("free_space_distance", &V::free_space_distance)
-        .def_readwrite ("free_space_fraction", &V::free_space_fraction);
+        .def_readwrite ("free_space_fraction", &V::free_space_fraction)
+        .def_readwrite ("empty_space_margin", &V::empty_space_margin);
 
       using R = pcl::registration::TensorRegistrationParams;
       bindStruct<R> (m, "RegistrationParams", "Every parameter of pairwise registration; C++ pcl::registration::TensorRegistrationParams.",
                      {"preparation", "grid_size", "partners_per_vertex", "min_normal_angle", "region_growing",
                       "overlap_threshold", "correlation_threshold", "theta_bin_width", "order", "scene_tensor_batches",
                       "batch_hypotheses", "verification", "max_hypotheses", "repeat_rotation", "repeat_translation",
-                      "ambiguity_checks", "ambiguity_rotation"})
+                      "ambiguity_checks", "ambiguity_rotation", "probe_rivals", "rival_margin"})
         .def_readwrite ("preparation", &R::preparation)
         .def_readwrite ("grid_size", &R::grid_size)
         .def_readwrite ("partners_per_vertex", &R::partners_per_vertex)
@@ -116,7 +118,9 @@ namespace pcl_tensor_python
         .def_readwrite ("repeat_rotation", &R::repeat_rotation)
         .def_readwrite ("repeat_translation", &R::repeat_translation)
         .def_readwrite ("ambiguity_checks", &R::ambiguity_checks)
-        .def_readwrite ("ambiguity_rotation", &R::ambiguity_rotation);
+        .def_readwrite ("ambiguity_rotation", &R::ambiguity_rotation)
+        .def_readwrite ("probe_rivals", &R::probe_rivals)
+        .def_readwrite ("rival_margin", &R::rival_margin);
     }
 
     void

@@ -71,9 +71,9 @@ namespace pcl
     pairCacheKey (const TensorViewCacheKey& model, const TensorViewCacheKey& scene, const ObjectDimensions& dims,
                   const pcl::registration::TensorRegistrationParams& params)
     {
-      static_assert (sizeof (pcl::registration::TensorVerificationParams) == 96,
+      static_assert (sizeof (pcl::registration::TensorVerificationParams) == 112,
                      "a field was added to TensorVerificationParams: add it to pairCacheKey () too");
-      static_assert (sizeof (pcl::registration::TensorRegistrationParams) == 240,
+      static_assert (sizeof (pcl::registration::TensorRegistrationParams) == 272,
                      "a field was added to TensorRegistrationParams: add it to pairCacheKey () too");
       TensorViewCacheKey key;
       key.source = taggedHash ("pair").add (model.source).add (model.preparation).add (scene.source).add (scene.preparation).digest ();
@@ -84,11 +84,11 @@ namespace pcl
       hash.add (params.overlap_threshold).add (params.correlation_threshold).add (params.theta_bin_width)
           .add (static_cast<int> (params.order)).add (params.scene_tensor_batches).add (params.batch_hypotheses)
           .add (params.max_hypotheses).add (params.repeat_rotation).add (params.repeat_translation)
-          .add (params.ambiguity_checks).add (params.ambiguity_rotation);
+          .add (params.ambiguity_checks).add (params.ambiguity_rotation).add (params.probe_rivals).add (params.rival_margin);
       hash.add (v.coarse_dimension_fraction).add (v.correspondence_fraction).add (v.coarse_distance).add (v.count_both_views)
-          .add (v.fine_distance).add (v.fine_dimension_tolerance).add (v.checked_dimensions).add (v.icp_iterations)
+          .add (v.fine_distance).add (v.fine_dimension_tolerance).add (v.fine_dimension_fraction).add (v.checked_dimensions).add (v.icp_iterations)
           .add (v.icp_max_distance).add (v.icp_final_distance).add (v.icp_coarse_stage_step).add (v.sample_points)
-          .add (v.free_space_distance).add (v.free_space_fraction);
+          .add (v.free_space_distance).add (v.free_space_fraction).add (v.empty_space_margin);
       key.preparation = hash.digest ();
       return key;
     }

@@ -58,9 +58,13 @@ namespace pcl
         PCL_TENSOR_THROW (BadArgumentException, "verification: distances must be positive (ICP's final one at most its first), got coarse "
                           << p.coarse_distance << ", fine " << p.fine_distance << ", ICP " << p.icp_max_distance << " to "
                           << p.icp_final_distance);
-      if (!(p.coarse_dimension_fraction >= 0.0) || !(p.fine_dimension_tolerance >= 0.0) ||
-          !std::isfinite (p.coarse_dimension_fraction) || !std::isfinite (p.fine_dimension_tolerance))
+      if (!(p.coarse_dimension_fraction >= 0.0) || !(p.fine_dimension_tolerance >= 0.0) || !(p.fine_dimension_fraction >= 0.0) ||
+          !std::isfinite (p.coarse_dimension_fraction) || !std::isfinite (p.fine_dimension_tolerance) ||
+          !std::isfinite (p.fine_dimension_fraction))
         PCL_TENSOR_THROW (BadArgumentException, "verification: dimension tolerances must be finite and non-negative");
+      if (!(p.empty_space_margin >= 0.0) || !std::isfinite (p.empty_space_margin))
+        PCL_TENSOR_THROW (BadArgumentException, "verification: the empty-space margin must be finite and non-negative, got "
+                          << p.empty_space_margin);
       if (!positive (p.free_space_distance) || !(p.free_space_fraction >= 0.0 && p.free_space_fraction <= 1.0))
         PCL_TENSOR_THROW (BadArgumentException, "verification: free-space distance must be positive and its fraction in [0, 1], got "
                           << p.free_space_distance << " and " << p.free_space_fraction);
@@ -190,10 +194,18 @@ namespace pcl
         for (std::size_t i = 0; i < from.size (); i += step)
         {
           const Eigen::Vector3f p = (t * from[i].getVector4fMap ()).head<3> ();
-          if (!to.sample (p, sample) || sample.weight < kMinWeight)
-            continue;
-          ++seen;
-          violating += sample.distance > margin ? 1 : 0;
+          if (to.sample (p, sample))
+          {
+            if (sample.weight < kMinWeight)
+              continue;
+            ++seen;
+            violating += sample.distance > margin ? 1 : 0;
+          }
+          else if (to.seenEmpty (p))
+          {
+            ++seen;
+            ++violating;
+          }
         }
         return seen < kMinSeen ? 0.0 : static_cast<double> (violating) / static_cast<double> (seen);
       }
@@ -203,10 +215,17 @@ namespace pcl
     CorrespondenceRejectorTensorVerification::freeSpaceViolation (const Eigen::Matrix4f& t, double margin)
     {
       // The z-buffers are built only for hypotheses that got this far, once per pair of views.
+      const int empty_margin = static_cast<int> (std::ceil (params_.empty_space_margin * kZBufferPixelsPerResolution));
+      const auto project = [&] (const PreparedScan& view) {
+        auto projection = std::make_unique<RangeViewProjection> (view.fine, 3.0, kZBufferPixelsPerResolution, 16u << 20, view.resolution);
+        if (params_.empty_space_margin > 0.0)
+          projection->markEmptySpace (empty_margin);
+        return projection;
+      };
       if (!model_view_)
-        model_view_ = std::make_unique<RangeViewProjection> (model_->fine, 3.0, kZBufferPixelsPerResolution, 16u << 20, model_->resolution);
+        model_view_ = project (*model_);
       if (!scene_view_)
-        scene_view_ = std::make_unique<RangeViewProjection> (scene_->fine, 3.0, kZBufferPixelsPerResolution, 16u << 20, scene_->resolution);
+        scene_view_ = project (*scene_);
       return std::max (violationFraction (*scene_->fine.cloud, t, *model_view_, margin),
                        violationFraction (*model_->fine.cloud, inverseRigid (t), *scene_view_, margin));
     }
@@ -225,8 +244,29 @@ namespace pcl
       return registeredDimensionExcess (points, {0, model.size ()}, dims_, params_.checked_dimensions);
     }
 
+    PointToPlaneIcpResult
+    CorrespondenceRejectorTensorVerification::icp (const Eigen::Matrix4f& hypothesis, std::size_t min_pairs) const
+    {
+      const double d_res = getResolution ();
+      PointToPlaneIcpParams icp;
+      icp.max_iterations = params_.icp_iterations;
+      icp.max_distance = params_.icp_max_distance * d_res;
+      icp.final_distance = params_.icp_final_distance * d_res;
+      icp.min_translation = 1e-3 * d_res;
+      icp.coarse_stage_step = params_.icp_coarse_stage_step;
+      icp.min_pairs = min_pairs;
+      return pointToPlaneIcp (*scene_sample_, *model_->fine.cloud, model_search_, hypothesis, icp);
+    }
+
+    Eigen::Matrix4f
+    CorrespondenceRejectorTensorVerification::refine (const Eigen::Matrix4f& hypothesis)
+    {
+      prepare ();
+      return icp (hypothesis, 0).transform;
+    }
+
     bool
-    CorrespondenceRejectorTensorVerification::verify (const Eigen::Matrix4f& hypothesis, TensorVerificationResult& result)
+    CorrespondenceRejectorTensorVerification::verify (const Eigen::Matrix4f& hypothesis, TensorVerificationResult& result, bool refine)
     {
       prepare ();
       result = TensorVerificationResult ();
@@ -251,19 +291,16 @@ namespace pcl
         return false;
       }
 
-      // Step 10: refine with point-to-plane ICP.
-      PointToPlaneIcpParams icp;
-      icp.max_iterations = params_.icp_iterations;
-      icp.max_distance = params_.icp_max_distance * d_res;
-      icp.final_distance = params_.icp_final_distance * d_res;
-      icp.min_translation = 1e-3 * d_res;
-      icp.coarse_stage_step = params_.icp_coarse_stage_step;
-      // Fewer pairs than the sampled fine count below needs, even at a coarse stage's wider distance: the
-      // hypothesis will fail there, and the finer stages need not run.
-      icp.min_pairs = static_cast<std::size_t> (std::floor (scenePairsNeeded (kSampledFineShare * 2.0 * result.required_correspondences)));
-      const PointToPlaneIcpResult refined = pointToPlaneIcp (*scene_sample_, *model_->fine.cloud, model_search_, hypothesis, icp);
-      result.transform = refined.transform;
-      result.icp_fitness = refined.rms;
+      // Step 10: refine with point-to-plane ICP. Fewer pairs than the sampled fine count below needs,
+      // even at a coarse stage's wider distance: the hypothesis will fail there, and the finer stages
+      // need not run.
+      if (refine)
+      {
+        const PointToPlaneIcpResult refined =
+            icp (hypothesis, static_cast<std::size_t> (std::floor (scenePairsNeeded (kSampledFineShare * 2.0 * result.required_correspondences))));
+        result.transform = refined.transform;
+        result.icp_fitness = refined.rms;
+      }
 
       // Steps 11-12: twice n_c correspondences within d_res, over every point; the samples
       // reject clear failures first, since the full count costs a search per point.
@@ -282,9 +319,9 @@ namespace pcl
         return false;
       }
 
-      // Steps 13-14: the registered fine meshes must fit the object within 2 d_res (Eq. 9).
+      // Steps 13-14: the registered fine meshes must fit the object (Eq. 9), within 2 d_res or a tenth of D.
       result.fine_dimension_excess = dimensionExcess (*model_->fine.cloud, *scene_->fine.cloud, result.transform) / d_res;
-      if (result.fine_dimension_excess > params_.fine_dimension_tolerance)
+      if (result.fine_dimension_excess > std::max (params_.fine_dimension_tolerance, params_.fine_dimension_fraction * dims_.mean () / d_res))
       {
         result.stage = TensorVerificationStage::FINE_DIMENSIONS;
         return false;
@@ -300,6 +337,15 @@ namespace pcl
       }
       result.stage = TensorVerificationStage::PASSED;
       return true;
+    }
+
+    PoseConditioning
+    CorrespondenceRejectorTensorVerification::poseConditioning (const Eigen::Matrix4f& t)
+    {
+      prepare ();
+      // The scene's sample (sample_points) shows the common part's shape as well as every point does.
+      const double distance = 2.0 * params_.fine_distance * getResolution ();
+      return computePoseConditioning (*scene_sample_, *model_->fine.cloud, model_search_, t, distance);
     }
 
     void

@@ -64,6 +64,8 @@ namespace pcl
       if (params.ambiguity_checks < 0 || !(params.ambiguity_rotation >= 0.0 && params.ambiguity_rotation <= 180.0))
         PCL_TENSOR_THROW (BadArgumentException, "ambiguity checks must be non-negative and their rotation in [0, 180] degrees, got "
                           << params.ambiguity_checks << " and " << params.ambiguity_rotation);
+      if (!(params.rival_margin >= 0.0 && params.rival_margin <= 1.0))
+        PCL_TENSOR_THROW (BadArgumentException, "the rival margin must be in [0, 1], got " << params.rival_margin);
     }
 
     pcl::PointCloud<pcl::TensorDescriptor>::Ptr

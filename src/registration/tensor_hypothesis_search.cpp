@@ -9,6 +9,7 @@
 #include <pcl/common/time.h>
 #include <pcl/registration/tensor_match.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace pcl
@@ -36,6 +37,11 @@ namespace pcl
           return cosHalfAngleBetween (a, b) >= std::cos (degrees * M_PI / 360.0) &&
                  static_cast<double> (((a - b) * point).norm ()) <= distance;
         }
+
+        /** A probed rival pose is another answer when it is this far from the kept one (degrees, and
+          * d_res at the scene's centroid): nearer, it is the same pose where ICP stopped. */
+        constexpr double kRivalRotation = 5.0;
+        constexpr double kRivalTranslation = 10.0;
 
         /** Hypotheses that reached ICP and failed; a close repeat would fail the same way. */
         class RefutedHypotheses
@@ -243,6 +249,44 @@ namespace pcl
               return false;
             }
 
+            /** The rival poses near \a best (rivalPoses()) that pass verification and the acceptor: the
+              * one with the most fine correspondences replaces \a best. True when another distinct pose
+              * has nearly as many (rival_margin): the views do not pin the pose down. */
+            bool
+            probeRivals (TensorVerificationResult& best)
+            {
+              if (!params_.probe_rivals)
+                return false;
+              const PoseConditioning conditioning = verification_.poseConditioning (best.transform);
+              const double distance = params_.repeat_translation * report_.resolution;
+              // A rival is another answer, not the same pose where ICP stopped (kRivalRotation, kRivalTranslation).
+              const double rival_distance = kRivalTranslation * report_.resolution;
+              std::vector<TensorVerificationResult> passed{best};
+              for (const Eigen::Matrix4f& probe : rivalPoses (conditioning, best.transform, 2, {0.35, 0.8}))
+              {
+                ++report_.ambiguity_checks;
+                // Most probes of a pose the views pin down return to it under ICP: no rival, no checks.
+                const Eigen::Matrix4f refined = verification_.refine (probe);
+                if (posesAgree (refined, best.transform, scene_centroid_, params_.repeat_rotation, distance))
+                  continue;
+                TensorVerificationResult result;
+                if (verification_.verify (refined, result, false) && (!accept_ || accept_ (result)))
+                  passed.push_back (result);
+              }
+              const auto strongest = std::max_element (passed.begin (), passed.end (), [] (const auto& a, const auto& b) {
+                return a.fine_correspondences < b.fine_correspondences;
+              });
+              best = *strongest;
+              for (const auto& r : passed)
+                if (r.fine_correspondences >= (1.0 - params_.rival_margin) * best.fine_correspondences &&
+                    !posesAgree (r.transform, best.transform, scene_centroid_, kRivalRotation, rival_distance))
+                {
+                  report_.rival_transform = r.transform;
+                  return true;
+                }
+              return false;
+            }
+
             /** Verify the first \a count of \a matches in order; all of them may serve as rivals. */
             bool
             verify (const std::vector<TensorMatch>& matches, std::size_t count, const TensorCloud::ConstPtr& batch,
@@ -268,7 +312,7 @@ namespace pcl
                   continue;
                 }
                 // Two poses that both verify: no evidence picks one, so neither is reported.
-                report_.ambiguous = findRival (matches, k + 1, batch, result.transform);
+                report_.ambiguous = findRival (matches, k + 1, batch, result.transform) || probeRivals (result);
                 report_.registered = !report_.ambiguous;
                 report_.winning_match = match;
                 report_.winning_match.scene += static_cast<decltype (match.scene)> (first);

@@ -439,6 +439,85 @@ namespace pcl
       return 1.0f / (plane.d0 + plane.du * du + plane.dv * dv);
   }
 
+  namespace
+  {
+    /** Along each line of \a length cells (stride \a step between cells, \a lines lines \a line_step
+      * apart), mark the cells within \a margin of a marked cell of \a in. */
+    void
+    dilateLines (const std::vector<std::uint8_t>& in, std::vector<std::uint8_t>& out, int lines, int length,
+                 std::size_t line_step, std::size_t step, int margin)
+    {
+      for (int l = 0; l < lines; ++l)
+      {
+        const std::size_t base = static_cast<std::size_t> (l) * line_step;
+        int last = -margin - 1;  // the last marked cell seen, going forward
+        for (int k = 0; k < length; ++k)
+        {
+          if (in[base + k * step])
+            last = k;
+          out[base + k * step] = k - last <= margin;
+        }
+        last = length + margin;  // going backward
+        for (int k = length - 1; k >= 0; --k)
+        {
+          if (in[base + k * step])
+            last = k;
+          out[base + k * step] |= last - k <= margin;
+        }
+      }
+    }
+  }
+
+  void
+  RangeViewProjection::markEmptySpace (int margin_pixels)
+  {
+    if (margin_pixels < 0)
+      PCL_TENSOR_THROW (BadArgumentException, "empty-space margin must be non-negative, got " << margin_pixels);
+    const std::size_t n = triangle_.size ();
+    std::vector<std::uint8_t> covered (n), rows (n);
+    for (std::size_t i = 0; i < n; ++i)
+      covered[i] = triangle_[i] >= 0;
+    // A square neighbourhood is a dilation along the rows, then along the columns.
+    dilateLines (covered, rows, height_, width_, static_cast<std::size_t> (width_), 1, margin_pixels);
+    dilateLines (rows, covered, width_, height_, 1, static_cast<std::size_t> (width_), margin_pixels);
+    // Only the background around the view counts: a hole the surface encloses may be a dropout (a
+    // dark or shiny patch, a triangulation scanner's shadow) rather than space seen through.
+    empty_.assign (n, 0);
+    std::vector<std::size_t> stack;
+    const auto push = [&] (int c, int r) {
+      const std::size_t i = static_cast<std::size_t> (r) * width_ + c;
+      if (!covered[i] && !empty_[i])
+      {
+        empty_[i] = 1;
+        stack.push_back (i);
+      }
+    };
+    for (int c = 0; c < width_; ++c)
+      push (c, 0), push (c, height_ - 1);
+    for (int r = 0; r < height_; ++r)
+      push (0, r), push (width_ - 1, r);
+    while (!stack.empty ())
+    {
+      const std::size_t i = stack.back ();
+      stack.pop_back ();
+      const int c = static_cast<int> (i % width_), r = static_cast<int> (i / width_);
+      if (c > 0) push (c - 1, r);
+      if (c + 1 < width_) push (c + 1, r);
+      if (r > 0) push (c, r - 1);
+      if (r + 1 < height_) push (c, r + 1);
+    }
+  }
+
+  bool
+  RangeViewProjection::seenEmpty (const Eigen::Vector3f& p) const
+  {
+    if (empty_.empty ())
+      return false;
+    float u, v;
+    int col, row;
+    return retinal (scan_to_sensor_ * p, u, v) && pixelOf (u, v, col, row) && empty_[static_cast<std::size_t> (row) * width_ + col];
+  }
+
   bool
   RangeViewProjection::sample (const Eigen::Vector3f& p, Sample& sample) const
   {
@@ -523,6 +602,6 @@ namespace pcl
   RangeViewProjection::memoryBytes () const
   {
     return triangle_.size () * sizeof (std::int32_t) + planes_.size () * sizeof (Plane)
-         + (tile_min_.size () + tile_max_.size ()) * sizeof (float);
+         + (tile_min_.size () + tile_max_.size ()) * sizeof (float) + empty_.size ();
   }
 }

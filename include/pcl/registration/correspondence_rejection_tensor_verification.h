@@ -7,6 +7,8 @@
 #include <pcl/features/tensor_descriptor.h>
 #include <pcl/registration/correspondence_rejection.h>
 #include <pcl/registration/tensor_match.h>
+#include <pcl/registration/point_to_plane_icp.h>
+#include <pcl/registration/pose_conditioning.h>
 #include <pcl/registration/tensor_verification.h>
 #include <pcl/search/bounded_nearest_search.h>
 #include <pcl/surface/range_view_projection.h>
@@ -79,10 +81,24 @@ namespace pcl
         /** \brief Verify one hypothesis that takes scene points into the model's frame.
           * \param[in] hypothesis the rigid transform of a tensor match (transformFromTensorPair)
           * \param[out] result the stage reached and the measurements made
+          * \param[in] refine refine the hypothesis by ICP (step 10) before the fine checks (default);
+          *            false judges it as it is, e.g. a pose refine() has already refined
           * \return result.passed ()
           * \throw pcl::BadArgumentException when the model or the scene is missing
           */
-        bool verify (const Eigen::Matrix4f& hypothesis, TensorVerificationResult& result);
+        bool verify (const Eigen::Matrix4f& hypothesis, TensorVerificationResult& result, bool refine = true);
+
+        /** \brief \a hypothesis refined by verify()'s ICP alone, without any check: where verify() would
+          * judge it. Lets a caller skip the checks of a hypothesis that converges to a pose it knows.
+          * \throw pcl::BadArgumentException when the model or the scene is missing
+          */
+        Eigen::Matrix4f refine (const Eigen::Matrix4f& hypothesis);
+
+        /** \brief How well the surface the views share under \a t pins the pose down: the conditioning of
+          * the scene's sample (sample_points) paired with the model's fine points within 2 fine_distance d_res.
+          * \throw pcl::BadArgumentException when the model or the scene is missing
+          */
+        PoseConditioning poseConditioning (const Eigen::Matrix4f& t);
 
         /** \brief Keep the correspondences whose hypothesis passes verify(), in order.
           * The transform of each is available from getAcceptedTransforms(), index for index.
@@ -124,6 +140,9 @@ namespace pcl
         /** Points of the scene's sample that must have a correspondence for correspondences() on the
           * samples to reach \a correspondences. */
         double scenePairsNeeded (double correspondences) const;
+        /** verify()'s ICP from \a hypothesis on the scene's sample; stages before the last end with
+          * fewer than \a min_pairs pairs (PointToPlaneIcpParams::min_pairs). */
+        PointToPlaneIcpResult icp (const Eigen::Matrix4f& hypothesis, std::size_t min_pairs) const;
         /** The larger free-space violation of the two views under \a t (TensorVerificationParams). */
         double freeSpaceViolation (const Eigen::Matrix4f& t, double margin);
         /** max(D_combined - D) of the model points and the transformed scene points, in the best of

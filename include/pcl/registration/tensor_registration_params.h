@@ -92,6 +92,19 @@ namespace pcl
         * back to the passed pose. A symmetry finer than this (a sixfold one, a cylinder's) is not
         * detected; see doc/design.md#ambiguity-check. */
       double ambiguity_rotation = 60.0;
+      /** Once a pose passes, the poses a rival could take near it are probed too (rivalPoses(): moved
+        * along the two motions its common part constrains least, and turned half-way about that part's
+        * principal axes), each refined by ICP and verified. Of the poses that pass, the one with the
+        * most fine correspondences is kept; another distinct one with enough of them (rival_margin)
+        * means the surfaces do not pin the pose down (a surface of revolution, a plane, a cylinder, a
+        * twofold symmetry), and the pair is reported ambiguous. false: no probe.
+        * \note Beyond the paper; see doc/design.md#rival-probe. */
+      bool probe_rivals = true;
+      /** A distinct rival that passes with at least (1 - rival_margin) times the kept pose's fine
+        * correspondences makes the pair ambiguous (default 1: any rival that passes). Fewer is not
+        * safer: a pose turned along a surface of revolution gains correspondences where it turns the
+        * views onto more of each other. */
+      double rival_margin = 1.0;
     };
 
     /** \brief Check every parameter of \a params before any work is done: the components' own

@@ -72,6 +72,19 @@ namespace pcl
         */
       bool depthRange (const Eigen::Vector3f& lo, const Eigen::Vector3f& hi, float& min_depth, float& max_depth) const;
 
+      /** \brief Mark the lines of sight the sensor saw through: the z-buffer's pixels farther than
+        * \a margin_pixels (in rows and columns) from every pixel the surface covers, and connected to
+        * the z-buffer's border through such pixels (the background around the view, not a hole the
+        * surface encloses, which may be a dropout). The margin keeps silhouettes, pruned depth
+        * discontinuities and small dropouts from being taken for empty space.
+        * seenEmpty() answers from this mask; each call replaces it.
+        * \throw pcl::BadArgumentException on a negative margin
+        */
+      void markEmptySpace (int margin_pixels);
+      /** \brief Whether the line of sight through \a p (scan frame) is one markEmptySpace() marked:
+        * the sensor saw nothing anywhere along it. False outside the z-buffer (the view's own extent on
+        * the retinal plane), behind the sensor, or before markEmptySpace(). */
+      bool seenEmpty (const Eigen::Vector3f& p) const;
       /** \brief The transform from the scan frame into the sensor frame (inverse of the viewpoint's pose). */
       const Eigen::Affine3f& getScanToSensor () const { return scan_to_sensor_; }
 
@@ -129,6 +142,7 @@ namespace pcl
       float u0_ = 0.0f, v0_ = 0.0f, inv_pixel_ = 1.0f;
       int width_ = 0, height_ = 0;
       std::vector<std::int32_t> triangle_;  ///< per pixel, row-major: index into planes_, or -1
+      std::vector<std::uint8_t> empty_;     ///< per pixel: seen through (markEmptySpace()); empty before
       std::vector<Plane> planes_;
       /** Per tile of kTile x kTile pixels: smallest and largest surface depth (sensor z). */
       std::vector<float> tile_min_, tile_max_;
