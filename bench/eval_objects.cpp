@@ -160,13 +160,9 @@ namespace
   {
     ObjectPair pair;
     pair.object = object;
-    const auto report = registerRawScans (model.cloud, model.viewpoint, scene.cloud, scene.viewpoint, o.params);
-    pair.result.time_ms = report.timings.total_ms;
-    scoreTransform (model, scene, report.registered, report.transform, pair.result);
+    pcl::registration::TensorRegistrationReport report;
+    pair.result = evaluateTensorRegistration (model, scene, o.params, &report);
     pair.result.overlap = pairOverlap (model, scene);
-    pair.result.hypotheses = report.hypotheses_tried;
-    pair.result.matches = report.matches;
-    pair.result.failures = report.failures;
     pair.ambiguous = report.ambiguous;
     if (report.registered)
       pair.reported_conditioning = conditioningAt (model, scene, report.transform, pair.result.resolution);
@@ -189,9 +185,7 @@ namespace
       {
         const auto& [m, s] = pairs[k];
         rows[k] = evaluatePair (object, views[m], views[s], o);
-        PairResult& r = rows[k].result;
-        r.model = views[m].name;
-        r.scene = views[s].name;
+        const PairResult& r = rows[k].result;
         std::lock_guard<std::mutex> lock (print);
         std::printf ("  %s %s <- %s overlap %.2f: %s%s (%.1f deg, %.1f d_res) %.0f ms, conditioning %.3f; truth %s, %.3f\n",
                      object.c_str (), views[m].name.c_str (), views[s].name.c_str (), r.overlap,

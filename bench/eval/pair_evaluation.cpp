@@ -123,9 +123,12 @@ namespace pcl_tensor_eval
 
   PairResult
   evaluateTensorRegistration (const EvalView& model, const EvalView& scene,
-                              const pcl::registration::TensorRegistrationParams& params)
+                              const pcl::registration::TensorRegistrationParams& params,
+                              pcl::registration::TensorRegistrationReport* full_report)
   {
     const auto report = registerRawScans (model.cloud, model.viewpoint, scene.cloud, scene.viewpoint, params);
+    if (full_report)
+      *full_report = report;
     return scoredReport (model, scene, report, report.timings.total_ms);
   }
 }

@@ -70,8 +70,10 @@ namespace pcl_tensor_eval
   /** \brief Register the scene's raw scan to the model's as pcl_tensor_register does, and score it:
     * pcl::registration::TensorRegistration from the two clouds and sensors, D from the pair alone.
     * Its time is the registration after loading (TensorRegistrationReport::timings.total_ms).
+    * \param[out] report when given, the registration's whole report (e.g. ambiguous, the transform)
     */
   PairResult
   evaluateTensorRegistration (const EvalView& model, const EvalView& scene,
-                              const pcl::registration::TensorRegistrationParams& params);
+                              const pcl::registration::TensorRegistrationParams& params,
+                              pcl::registration::TensorRegistrationReport* report = nullptr);
 }

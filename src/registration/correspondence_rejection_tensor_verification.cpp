@@ -266,7 +266,7 @@ namespace pcl
     }
 
     bool
-    CorrespondenceRejectorTensorVerification::verify (const Eigen::Matrix4f& hypothesis, TensorVerificationResult& result, bool refine)
+    CorrespondenceRejectorTensorVerification::verify (const Eigen::Matrix4f& hypothesis, TensorVerificationResult& result, bool run_icp)
     {
       prepare ();
       result = TensorVerificationResult ();
@@ -294,7 +294,7 @@ namespace pcl
       // Step 10: refine with point-to-plane ICP. Fewer pairs than the sampled fine count below needs,
       // even at a coarse stage's wider distance: the hypothesis will fail there, and the finer stages
       // need not run.
-      if (refine)
+      if (run_icp)
       {
         const PointToPlaneIcpResult refined =
             icp (hypothesis, static_cast<std::size_t> (std::floor (scenePairsNeeded (kSampledFineShare * 2.0 * result.required_correspondences))));

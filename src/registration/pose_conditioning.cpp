@@ -82,7 +82,7 @@ namespace pcl
       result.ratio = largest > 0.0 ? std::max (0.0, result.eigenvalues (0)) / largest : 0.0;
       return result;
     }
-  
+
     namespace
     {
       /** The rigid motion of the twist (\a omega, \a v) about \a centre (SE(3)'s exponential, \a v the

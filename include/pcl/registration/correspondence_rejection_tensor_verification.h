@@ -81,12 +81,12 @@ namespace pcl
         /** \brief Verify one hypothesis that takes scene points into the model's frame.
           * \param[in] hypothesis the rigid transform of a tensor match (transformFromTensorPair)
           * \param[out] result the stage reached and the measurements made
-          * \param[in] refine refine the hypothesis by ICP (step 10) before the fine checks (default);
+          * \param[in] run_icp refine the hypothesis by ICP (step 10) before the fine checks (default);
           *            false judges it as it is, e.g. a pose refine() has already refined
           * \return result.passed ()
           * \throw pcl::BadArgumentException when the model or the scene is missing
           */
-        bool verify (const Eigen::Matrix4f& hypothesis, TensorVerificationResult& result, bool refine = true);
+        bool verify (const Eigen::Matrix4f& hypothesis, TensorVerificationResult& result, bool run_icp = true);
 
         /** \brief \a hypothesis refined by verify()'s ICP alone, without any check: where verify() would
           * judge it. Lets a caller skip the checks of a hypothesis that converges to a pose it knows.
