@@ -54,6 +54,10 @@ namespace
     PairResult result;
     bool ambiguous = false;
     double reported_conditioning = -1.0;  ///< at the reported pose; -1 when none was reported
+    pcl::registration::TensorVerificationResult reported;  ///< the reported pose's verification
+    pcl::registration::TensorCovisibility truth_covisibility, reported_covisibility;
+    /** Free-space violations at margins of 2, 4 and 8 d_res (at least 3 sigma), at the truth and the reported pose. */
+    std::array<double, 3> truth_violation{}, reported_violation{};
     pcl::registration::TensorVerificationResult truth;  ///< the ground truth, verified with D from the pair
     double truth_conditioning = -1.0;
   };
@@ -152,6 +156,17 @@ namespace
     pcl::registration::CorrespondenceRejectorTensorVerification verification;
     setUpVerification (verification, model, scene, dims, o.params);
     verification.verify (groundTruth (model, scene).matrix ().cast<float> (), pair.truth);
+    pair.truth_covisibility = verification.covisibility (pair.truth.transform);
+    if (pair.result.registered)
+      pair.reported_covisibility = verification.covisibility (pair.reported.transform);
+    const double noise = 3.0 * std::hypot (model.prepared->noise, scene.prepared->noise), d_res = verification.getResolution ();
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      const double margin = std::max (noise, (2 << k) * d_res);
+      pair.truth_violation[k] = verification.freeSpaceViolation (pair.truth.transform, margin);
+      if (pair.result.registered)
+        pair.reported_violation[k] = verification.freeSpaceViolation (pair.reported.transform, margin);
+    }
     pair.truth_conditioning = conditioningAt (model, scene, pair.truth.transform, pair.result.resolution);
   }
 
@@ -164,6 +179,7 @@ namespace
     pair.result = evaluateTensorRegistration (model, scene, o.params, &report);
     pair.result.overlap = pairOverlap (model, scene);
     pair.ambiguous = report.ambiguous;
+    pair.reported = report.verification;
     if (report.registered)
       pair.reported_conditioning = conditioningAt (model, scene, report.transform, pair.result.resolution);
     if (o.truth)
@@ -280,7 +296,14 @@ namespace
       out << p.object << ',' << r.model << ',' << r.scene << ',' << r.overlap << ',' << r.registered << ',' << r.correct << ','
           << p.ambiguous << ',' << r.rotation_error_deg << ',' << r.translation_error_res << ',' << r.time_ms << ','
           << p.reported_conditioning << ',' << toString (p.truth.stage) << ',' << p.truth.fine_dimension_excess << ','
-          << p.truth.free_space_violation << ',' << p.truth_conditioning << '\n';
+          << p.truth.free_space_violation << ',' << p.truth_conditioning << ',' << p.reported.fine_correspondences << ','
+          << p.reported.required_correspondences << ',' << p.reported.fine_dimension_excess << ','
+          << p.reported.free_space_violation;
+      for (const auto& c : {p.truth_covisibility, p.reported_covisibility})
+        out << ',' << c.model_seen << ',' << c.scene_seen << ',' << c.model_matched << ',' << c.scene_matched;
+      for (const auto& v : {p.truth_violation, p.reported_violation})
+        out << ',' << v[0] << ',' << v[1] << ',' << v[2];
+      out << '\n';
     }
     out.flush ();
   }
@@ -334,7 +357,11 @@ main (int argc, char** argv)
     std::filesystem::create_directories (o.out);
     std::ofstream pairs_csv (o.out + "/objects_pairs.csv"), summary_csv (o.out + "/objects.csv");
     pairs_csv << "object,model,scene,overlap,registered,correct,ambiguous,rotation_error_deg,translation_error_res,time_ms,"
-                 "conditioning,truth_stage,truth_fine_dimension_excess,truth_free_space,truth_conditioning\n";
+                 "conditioning,truth_stage,truth_fine_dimension_excess,truth_free_space,truth_conditioning,"
+                 "fine_correspondences,required_correspondences,fine_dimension_excess,free_space,"
+                 "truth_model_seen,truth_scene_seen,truth_model_matched,truth_scene_matched,"
+                 "model_seen,scene_seen,model_matched,scene_matched,"
+                 "truth_free_space_2,truth_free_space_4,truth_free_space_8,free_space_2,free_space_4,free_space_8\n";
     summary_csv << summaryHeader () << '\n';
     std::printf ("%s\n", summaryHeader ().c_str ());
     for (const auto& [name, load] : objectSets (o))

@@ -8,6 +8,7 @@
 #include <pcl/simulation/example_object.h>
 #include <pcl/simulation/synthetic_views.h>
 #include <pcl/simulation/view_set.h>
+#include <pcl/surface/range_view_projection.h>
 
 #include <gtest/gtest.h>
 
@@ -180,6 +181,74 @@ TEST (CorrespondenceRejectorTensorVerification, CountingBothViewsPassesNoWrongHy
     }
     EXPECT_GT (passed, 0) << m << " <- " << m + 1;
   }
+}
+
+TEST (CorrespondenceRejectorTensorVerification, CovisibilityCountsWhereTheOtherSensorCouldSee)
+{
+  const auto exact = [] (int m, int s) -> Eigen::Matrix4f {
+    return (views ()[m].pose.inverse () * views ()[s].pose).matrix ().cast<float> ();
+  };
+  CorrespondenceRejectorTensorVerification rejector;
+  setUp (rejector, 0, 1);
+  // Views 30 degrees apart: most of each is seen by the other sensor, and nearly all of that matches.
+  const TensorCovisibility adjacent = rejector.covisibility (exact (0, 1));
+  EXPECT_GT (adjacent.model_seen, 0.6);
+  EXPECT_GT (adjacent.scene_seen, 0.6);
+  EXPECT_GT (adjacent.model_matched, 0.9);
+  EXPECT_GT (adjacent.scene_matched, 0.9);
+  // ... and most of what matches lies on the surface the other sensor saw (not at its pruned grazing edges).
+  EXPECT_GT (adjacent.model_matched_seen, 0.8);
+  EXPECT_GT (adjacent.scene_matched_seen, 0.8);
+  // The same pair moved 5 d_res along the model's line of sight: still seen, no longer matched.
+  const Eigen::Vector3f line_of_sight = views ()[0].scan->fine.viewpoint.sensor_pose.linear ().col (2).cast<float> ();
+  Eigen::Matrix4f moved = exact (0, 1);
+  moved.block<3, 1> (0, 3) += 5.0f * static_cast<float> (rejector.getResolution ()) * line_of_sight;
+  const TensorCovisibility off = rejector.covisibility (moved);
+  EXPECT_LT (off.model_matched, 0.2);
+  EXPECT_LT (off.scene_matched, 0.2);
+  // Opposite views: each hides the other behind its own surface, so little is seen at all.
+  setUp (rejector, 0, 6);
+  const TensorCovisibility opposite = rejector.covisibility (exact (0, 6));
+  EXPECT_LT (opposite.model_seen, 0.1);
+  EXPECT_LT (opposite.scene_seen, 0.1);
+}
+
+TEST (CorrespondenceRejectorTensorVerification, OcclusionBoundariesAPoseSlightlyOffMissesAreNoViolation)
+{
+  // Bars 20 pitches in front of a plane, seen by an orthographic sensor: the view against itself,
+  // moved 3.5 pitches across the bars, puts a strip beside each bar's edge far in front of the plane.
+  constexpr float pitch = 0.001f;
+  pcl::PointCloud<pcl::PointXYZ> bars (120, 120);
+  for (std::uint32_t r = 0; r < 120; ++r)
+    for (std::uint32_t c = 0; c < 120; ++c)
+    {
+      const bool bar = r >= 20 && r < 100 && (c / 8) % 2 == 0;
+      bars.at (c, r) = pcl::PointXYZ (pitch * static_cast<float> (c), pitch * static_cast<float> (r), bar ? 20.0f * pitch : 0.0f);
+    }
+  const TensorRegistrationParams defaults;
+  const auto view = std::make_shared<pcl::PreparedScan> (pcl::prepareScan (bars, pcl::ScanViewpoint::fromPositiveZ (), defaults.preparation));
+  CorrespondenceRejectorTensorVerification rejector;
+  rejector.setModel (view, nullptr);
+  rejector.setScene (view, nullptr);
+  const double margin = 2.0 * rejector.getResolution ();
+  Eigen::Matrix4f moved = Eigen::Matrix4f::Identity ();
+  moved (0, 3) = 3.5f * pitch;
+
+  // The premise: without the excuse, more than 2% of the points would violate the other's free space, deeply.
+  const pcl::RangeViewProjection projection (view->fine, 3.0, 2.0, 16u << 20, view->resolution);
+  std::size_t seen = 0, deep = 0;
+  pcl::RangeViewProjection::Sample sample;
+  for (const auto& p : *view->fine.cloud)
+    if (projection.sample ((moved * p.getVector4fMap ()).head<3> (), sample) && sample.weight >= 0.3f)
+    {
+      ++seen;
+      deep += sample.distance > 4.0 * margin ? 1 : 0;
+    }
+  ASSERT_GT (seen, 0u);
+  EXPECT_GT (static_cast<double> (deep) / static_cast<double> (seen), 0.02);
+  // Each such point has the bar it belongs to beside its line of sight: an occlusion boundary missed.
+  EXPECT_LT (rejector.freeSpaceViolation (moved, margin), 0.002);
+  EXPECT_LT (rejector.freeSpaceViolation (Eigen::Matrix4f::Identity (), margin), 0.002);
 }
 
 TEST (CorrespondenceRejectorTensorVerification, MissingInputThrows)

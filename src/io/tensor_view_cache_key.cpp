@@ -67,6 +67,13 @@ namespace pcl
       return hash.digest ();
     }
 
+    namespace
+    {
+      /** Cached pair results of an older verification are stale even under the same parameters: raise
+        * this when verification changes its verdicts (2: the free-space check's occlusion and noise rules). */
+      constexpr int kVerificationRevision = 2;
+    }
+
     TensorViewCacheKey
     pairCacheKey (const TensorViewCacheKey& model, const TensorViewCacheKey& scene, const ObjectDimensions& dims,
                   const pcl::registration::TensorRegistrationParams& params)
@@ -79,7 +86,7 @@ namespace pcl
       key.source = taggedHash ("pair").add (model.source).add (model.preparation).add (scene.source).add (scene.preparation).digest ();
       const auto& v = params.verification;
       ContentHash hash = taggedHash ("registration");
-      hash.add (dims.D[0]).add (dims.D[1]).add (dims.D[2]).add (hashTensorParameters (params));
+      hash.add (kVerificationRevision).add (dims.D[0]).add (dims.D[1]).add (dims.D[2]).add (hashTensorParameters (params));
       hash.add (hashPreparation (params.preparation, ScanViewpoint ()));
       hash.add (params.overlap_threshold).add (params.correlation_threshold).add (params.theta_bin_width)
           .add (static_cast<int> (params.order)).add (params.scene_tensor_batches).add (params.batch_hypotheses)

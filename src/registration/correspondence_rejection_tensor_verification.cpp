@@ -8,6 +8,7 @@
 #include <pcl/registration/point_to_plane_icp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace pcl
@@ -131,13 +132,11 @@ namespace pcl
       model_search_.setInputCloud (*model_->fine.cloud);
       model_view_.reset ();
       scene_view_.reset ();
+      // The scene's search and the model's sample serve count_both_views and covisibility().
       scene_sample_ = evenSample (*scene_->fine.cloud, params_.sample_points);
-      if (params_.count_both_views)
-      {
-        scene_search_ = pcl::BoundedNearestSearch (cell);
-        scene_search_.setInputCloud (*scene_->fine.cloud);
-        model_sample_ = evenSample (*model_->fine.cloud, params_.sample_points);
-      }
+      scene_search_ = pcl::BoundedNearestSearch (cell);
+      scene_search_.setInputCloud (*scene_->fine.cloud);
+      model_sample_ = evenSample (*model_->fine.cloud, params_.sample_points);
       prepared_ = true;
     }
 
@@ -177,42 +176,95 @@ namespace pcl
         * (doc/design.md#free-space-check). */
       constexpr double kZBufferPixelsPerResolution = 2.0;
 
-      /** Of the points of \a from (under \a t) that \a to's sensor saw with a trusted surface behind
-        * them, the fraction lying more than \a margin in front of that surface. Points behind it are
-        * fine: that sensor could not see them. */
-      double
-      violationFraction (const pcl::PointCloud<pcl::PointNormal>& from, const Eigen::Matrix4f& t,
-                         const RangeViewProjection& to, double margin)
+      /** A point this many margins in front of the surface on its line of sight, with a surface at its own
+        * depth beside that line, lies on an occlusion boundary (doc/design.md#free-space-check). */
+      constexpr double kOcclusionDepthMargins = 4.0;
+
+      /** Whether \a p (scan frame of \a to), \a distance in front of the surface on its line of sight,
+        * has a surface of \a to no farther than itself (within \a margin) beside that line (in the
+        * z-buffer tiles that a box of \a margin about it covers, a few d_res): a foreground edge that a
+        * pose slightly off puts it beside. Only deep violations are excused; a shallow one is a surface
+        * out of place, not an edge missed. */
+      bool
+      besideOcclusionBoundary (const Eigen::Vector3f& p, float distance, const RangeViewProjection& to, double margin)
       {
-        // Surfaces near a view's border or seen at a grazing angle are not trusted (weight < 0.3).
+        if (distance <= kOcclusionDepthMargins * margin)
+          return false;
+        const Eigen::Vector3f s = to.getScanToSensor () * p;
+        const Eigen::Vector3f half = Eigen::Vector3f::Constant (static_cast<float> (margin));
+        float nearest = 0.0f, farthest = 0.0f;
+        return to.depthRange (s - half, s + half, nearest, farthest) && nearest <= s.z () + static_cast<float> (margin);
+      }
+
+      /** Where a point lies against a view's free space. */
+      enum class FreeSpace { UNSEEN, CONSISTENT, VIOLATING };
+
+      /** Where \a p (scan frame of \a to) lies: unseen when \a to's sensor saw no trusted surface on its
+        * line of sight (borders and grazing views, weight < 0.3, are not trusted) and no empty space;
+        * violating when more than \a margin in front of that surface (and not beside an occlusion
+        * boundary) or where the sensor saw empty space. Points behind the surface are consistent: that
+        * sensor could not see them. */
+      FreeSpace
+      freeSpaceAt (const Eigen::Vector3f& p, const RangeViewProjection& to, double margin)
+      {
         constexpr float kMinWeight = 0.3f;
+        RangeViewProjection::Sample sample;
+        if (to.sample (p, sample))
+        {
+          if (sample.weight < kMinWeight)
+            return FreeSpace::UNSEEN;
+          const bool in_front = sample.distance > margin && !besideOcclusionBoundary (p, sample.distance, to, margin);
+          return in_front ? FreeSpace::VIOLATING : FreeSpace::CONSISTENT;
+        }
+        return to.seenEmpty (p) ? FreeSpace::VIOLATING : FreeSpace::UNSEEN;
+      }
+
+      /** Whether at least a quarter of the points of \a from within \a margin of its point \a i (in its
+        * own view, \a from_search) violate \a to's free space too: a surface out of place, not a noisy
+        * point. Independent noise that puts 2% of the points past the margin gives a quarter of 12
+        * neighbours less than once in 500; a surface just past the margin, half of whose points are, nearly
+        * always. A point without neighbours counts. */
+      bool
+      coherentViolation (const pcl::PointCloud<pcl::PointNormal>& from, std::size_t i, const pcl::BoundedNearestSearch& from_search,
+                         const Eigen::Matrix4f& t, const RangeViewProjection& to, double margin)
+      {
+        std::vector<int> neighbours;
+        from_search.radiusSearch (from[i].getVector3fMap (), static_cast<float> (margin), neighbours);
+        std::size_t others = 0, violating = 0;
+        for (const int j : neighbours)
+          if (static_cast<std::size_t> (j) != i)
+          {
+            ++others;
+            violating += freeSpaceAt ((t * from[j].getVector4fMap ()).head<3> (), to, margin) == FreeSpace::VIOLATING ? 1 : 0;
+          }
+        return 4 * violating >= others;
+      }
+
+      /** Of the points of \a from (under \a t) that \a to's sensor saw (freeSpaceAt()), the fraction that
+        * violate its free space coherently (coherentViolation()). Independent noise puts single points
+        * past any margin; a misplaced surface puts whole patches there. */
+      double
+      violationFraction (const pcl::PointCloud<pcl::PointNormal>& from, const pcl::BoundedNearestSearch& from_search,
+                         const Eigen::Matrix4f& t, const RangeViewProjection& to, double margin)
+      {
         constexpr std::size_t kSamples = 4000;
         constexpr std::size_t kMinSeen = 50;  // fewer: too little seen by both to judge
         const std::size_t step = std::max<std::size_t> (1, from.size () / kSamples);
         std::size_t seen = 0, violating = 0;
-        RangeViewProjection::Sample sample;
         for (std::size_t i = 0; i < from.size (); i += step)
         {
-          const Eigen::Vector3f p = (t * from[i].getVector4fMap ()).head<3> ();
-          if (to.sample (p, sample))
-          {
-            if (sample.weight < kMinWeight)
-              continue;
-            ++seen;
-            violating += sample.distance > margin ? 1 : 0;
-          }
-          else if (to.seenEmpty (p))
-          {
-            ++seen;
-            ++violating;
-          }
+          const FreeSpace f = freeSpaceAt ((t * from[i].getVector4fMap ()).head<3> (), to, margin);
+          if (f == FreeSpace::UNSEEN)
+            continue;
+          ++seen;
+          violating += f == FreeSpace::VIOLATING && coherentViolation (from, i, from_search, t, to, margin) ? 1 : 0;
         }
         return seen < kMinSeen ? 0.0 : static_cast<double> (violating) / static_cast<double> (seen);
       }
     }
 
-    double
-    CorrespondenceRejectorTensorVerification::freeSpaceViolation (const Eigen::Matrix4f& t, double margin)
+    void
+    CorrespondenceRejectorTensorVerification::projectViews ()
     {
       // The z-buffers are built only for hypotheses that got this far, once per pair of views.
       const int empty_margin = static_cast<int> (std::ceil (params_.empty_space_margin * kZBufferPixelsPerResolution));
@@ -226,8 +278,21 @@ namespace pcl
         model_view_ = project (*model_);
       if (!scene_view_)
         scene_view_ = project (*scene_);
-      return std::max (violationFraction (*scene_->fine.cloud, t, *model_view_, margin),
-                       violationFraction (*model_->fine.cloud, inverseRigid (t), *scene_view_, margin));
+    }
+
+    double
+    CorrespondenceRejectorTensorVerification::freeSpaceMargin () const
+    {
+      return std::max (params_.free_space_distance * getResolution (), 3.0 * std::hypot (model_->noise, scene_->noise));
+    }
+
+    double
+    CorrespondenceRejectorTensorVerification::freeSpaceViolation (const Eigen::Matrix4f& t, double margin)
+    {
+      prepare ();
+      projectViews ();
+      return std::max (violationFraction (*scene_->fine.cloud, scene_search_, t, *model_view_, margin),
+                       violationFraction (*model_->fine.cloud, model_search_, inverseRigid (t), *scene_view_, margin));
     }
 
     double
@@ -328,8 +393,7 @@ namespace pcl
       }
 
       // Beyond the paper: neither view may put surface where the other's sensor saw through.
-      result.free_space_violation = freeSpaceViolation (result.transform, std::max (params_.free_space_distance * d_res,
-                                                                                    3.0 * std::hypot (model_->noise, scene_->noise)));
+      result.free_space_violation = freeSpaceViolation (result.transform, freeSpaceMargin ());
       if (result.free_space_violation > params_.free_space_fraction)
       {
         result.stage = TensorVerificationStage::FREE_SPACE;
@@ -337,6 +401,49 @@ namespace pcl
       }
       result.stage = TensorVerificationStage::PASSED;
       return true;
+    }
+
+    namespace
+    {
+      /** Of \a from's points (under \a t): the share that \a to's sensor could see, on a line of sight
+        * that meets its surface (at any weight but 0: grazing views count, as a common part seen from two
+        * sides is grazing in one of them) and not hidden behind it by more than \a margin; the share of
+        * those within \a radius of \a to's points; and the share of the points within \a radius that are seen. */
+      std::array<double, 3>
+      seenAndMatched (const pcl::PointCloud<pcl::PointNormal>& from, const Eigen::Matrix4f& t, const RangeViewProjection& to,
+                      const pcl::BoundedNearestSearch& to_search, double margin, double radius)
+      {
+        std::size_t seen = 0, matched = 0, seen_matched = 0;
+        std::int32_t hint = -1;
+        RangeViewProjection::Sample sample;
+        for (const auto& point : from)
+        {
+          const Eigen::Vector3f p = (t * point.getVector4fMap ()).head<3> ();
+          const bool is_seen = to.sample (p, sample) && sample.weight > 0.0f && sample.distance >= -margin;
+          const bool is_matched = to_search.anyWithin (p, static_cast<float> (radius), hint);
+          seen += is_seen ? 1 : 0;
+          matched += is_matched ? 1 : 0;
+          seen_matched += is_seen && is_matched ? 1 : 0;
+        }
+        const auto share = [] (std::size_t part, std::size_t whole) {
+          return whole == 0 ? 0.0 : static_cast<double> (part) / static_cast<double> (whole);
+        };
+        return {share (seen, from.size ()), share (seen_matched, seen), share (seen_matched, matched)};
+      }
+    }
+
+    TensorCovisibility
+    CorrespondenceRejectorTensorVerification::covisibility (const Eigen::Matrix4f& t)
+    {
+      prepare ();
+      projectViews ();
+      const double radius = params_.fine_distance * getResolution (), margin = freeSpaceMargin ();
+      TensorCovisibility c;
+      const auto scene = seenAndMatched (*scene_sample_, t, *model_view_, model_search_, margin, radius);
+      const auto model = seenAndMatched (*model_sample_, inverseRigid (t), *scene_view_, scene_search_, margin, radius);
+      c.scene_seen = scene[0], c.scene_matched = scene[1], c.scene_matched_seen = scene[2];
+      c.model_seen = model[0], c.model_matched = model[1], c.model_matched_seen = model[2];
+      return c;
     }
 
     PoseConditioning

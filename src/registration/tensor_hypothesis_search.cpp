@@ -43,6 +43,13 @@ namespace pcl
         constexpr double kRivalRotation = 5.0;
         constexpr double kRivalTranslation = 10.0;
 
+        /** A rival needs less evidence than an answer: one that fails only the free-space check, by at
+          * most this many times free_space_fraction, still makes the pair ambiguous. A turned pose of a
+          * symmetric object and the truth both meet the strict check rarely; doubting on the weaker
+          * evidence keeps the stricter check from turning ambiguous pairs into wrong answers
+          * (doc/design.md#free-space-check). */
+        constexpr double kRivalFreeSpaceFactor = 5.0;
+
         /** Hypotheses that reached ICP and failed; a close repeat would fail the same way. */
         class RefutedHypotheses
         {
@@ -223,8 +230,20 @@ namespace pcl
               return true;
             }
 
-            /** A second pose, other than \a pose, that the matches after \a from also verify; the matches
-              * whose hypothesis is near \a pose are taken as leading to it and skipped. */
+            /** Whether \a result, which failed verification or passed it, is evidence enough for a rival:
+              * it passed, or it failed only at the free-space check within kRivalFreeSpaceFactor; and the
+              * caller's acceptor takes it. */
+            bool
+            rivalPasses (const TensorVerificationResult& result) const
+            {
+              const bool verified = result.passed () ||
+                  (result.stage == TensorVerificationStage::FREE_SPACE &&
+                   result.free_space_violation <= kRivalFreeSpaceFactor * params_.verification.free_space_fraction);
+              return verified && (!accept_ || accept_ (result));
+            }
+
+            /** A second pose, other than \a pose, that the matches after \a from also verify (rivalPasses());
+              * the matches whose hypothesis is near \a pose are taken as leading to it and skipped. */
             bool
             findRival (const std::vector<TensorMatch>& matches, std::size_t from, const TensorCloud::ConstPtr& batch,
                        const Eigen::Matrix4f& pose)
@@ -238,7 +257,7 @@ namespace pcl
                 ++checks;
                 ++report_.ambiguity_checks;
                 TensorVerificationResult result;
-                if (passes (matches[k], batch, hypothesis, result) &&
+                if ((passes (matches[k], batch, hypothesis, result) || rivalPasses (result)) &&
                     !posesAgree (result.transform, pose, scene_centroid_, params_.repeat_rotation,
                                  params_.repeat_translation * report_.resolution))
                 {
@@ -251,7 +270,8 @@ namespace pcl
 
             /** The rival poses near \a best (rivalPoses()) that pass verification and the acceptor: the
               * one with the most fine correspondences replaces \a best. True when another distinct pose
-              * has nearly as many (rival_margin): the views do not pin the pose down. */
+              * that is evidence enough for a rival (rivalPasses()) has nearly as many (rival_margin): the
+              * views do not pin the pose down. */
             bool
             probeRivals (TensorVerificationResult& best)
             {
@@ -261,7 +281,7 @@ namespace pcl
               const double distance = params_.repeat_translation * report_.resolution;
               // A rival is another answer, not the same pose where ICP stopped (kRivalRotation, kRivalTranslation).
               const double rival_distance = kRivalTranslation * report_.resolution;
-              std::vector<TensorVerificationResult> passed{best};
+              std::vector<TensorVerificationResult> passed{best}, rivals;
               for (const Eigen::Matrix4f& probe : rivalPoses (conditioning, best.transform, 2, {0.35, 0.8}))
               {
                 ++report_.ambiguity_checks;
@@ -270,14 +290,18 @@ namespace pcl
                 if (posesAgree (refined, best.transform, scene_centroid_, params_.repeat_rotation, distance))
                   continue;
                 TensorVerificationResult result;
-                if (verification_.verify (refined, result, false) && (!accept_ || accept_ (result)))
-                  passed.push_back (result);
+                verification_.verify (refined, result, false);
+                if (!rivalPasses (result))
+                  continue;
+                (result.passed () ? passed : rivals).push_back (result);
               }
+              // Only a pose that passed outright may replace the answer; any may doubt it.
               const auto strongest = std::max_element (passed.begin (), passed.end (), [] (const auto& a, const auto& b) {
                 return a.fine_correspondences < b.fine_correspondences;
               });
               best = *strongest;
-              for (const auto& r : passed)
+              rivals.insert (rivals.end (), passed.begin (), passed.end ());
+              for (const auto& r : rivals)
                 if (r.fine_correspondences >= (1.0 - params_.rival_margin) * best.fine_correspondences &&
                     !posesAgree (r.transform, best.transform, scene_centroid_, kRivalRotation, rival_distance))
                 {

@@ -100,6 +100,19 @@ namespace pcl
           */
         PoseConditioning poseConditioning (const Eigen::Matrix4f& t);
 
+        /** \brief What each view shows of the other under \a t, where the other's sensor could see it
+          * (TensorCovisibility).
+          * \throw pcl::BadArgumentException when the model or the scene is missing
+          */
+        TensorCovisibility covisibility (const Eigen::Matrix4f& t);
+
+        /** \brief The larger, over both directions, fraction of the points of one view that the other's
+          * sensor saw and that lie more than \a margin in front of its surface, under \a t (the FREE_SPACE
+          * stage's measure, TensorVerificationResult::free_space_violation, at any margin).
+          * \throw pcl::BadArgumentException when the model or the scene is missing
+          */
+        double freeSpaceViolation (const Eigen::Matrix4f& t, double margin);
+
         /** \brief Keep the correspondences whose hypothesis passes verify(), in order.
           * The transform of each is available from getAcceptedTransforms(), index for index.
           */
@@ -126,8 +139,7 @@ namespace pcl
       private:
         using PointCloudN = pcl::PointCloud<pcl::PointNormal>;
 
-        /** Build the model's search and the scene's sample (ICP's input), once per input; with
-          * count_both_views also the scene's search and the model's sample. */
+        /** Build both views' searches and samples (the scene's is ICP's input), once per input. */
         void prepare ();
         /** Points of \a cloud, under \a t, with a point of \a search's cloud within \a radius. */
         static std::size_t countCorrespondences (const PointCloudN& cloud, const Eigen::Matrix4f& t,
@@ -143,8 +155,10 @@ namespace pcl
         /** verify()'s ICP from \a hypothesis on the scene's sample; stages before the last end with
           * fewer than \a min_pairs pairs (PointToPlaneIcpParams::min_pairs). */
         PointToPlaneIcpResult icp (const Eigen::Matrix4f& hypothesis, std::size_t min_pairs) const;
-        /** The larger free-space violation of the two views under \a t (TensorVerificationParams). */
-        double freeSpaceViolation (const Eigen::Matrix4f& t, double margin);
+        /** The z-buffers of both views, built once per pair, for the first hypothesis that needs them. */
+        void projectViews ();
+        /** The free-space margin: free_space_distance d_res, or three times the views' combined noise. */
+        double freeSpaceMargin () const;
         /** max(D_combined - D) of the model points and the transformed scene points, in the best of
           * their combined principal frame and each view's own (registeredDimensionExcess). */
         double dimensionExcess (const PointCloudN& model, const PointCloudN& scene, const Eigen::Matrix4f& t) const;

@@ -66,7 +66,9 @@ namespace pcl
       bool sampleSensor (const Eigen::Vector3f& s, Sample& sample) const;
 
       /** \brief Smallest and largest sensor-frame depth of the surface over the pixels a sensor-frame
-        * box projects to; false when no covered pixel is there. Lets a caller skip whole regions.
+        * box projects to, bounded from the z-buffer's tiles of 8 x 8 pixels that hold them (the range
+        * may be wider than the box's own); false when no covered pixel is there. Lets a caller skip
+        * whole regions.
         * \param[in] lo, hi opposite corners of an axis-aligned box in the sensor frame
         * \param[out] min_depth, max_depth the depth range (sensor z) of the surface seen there
         */
