@@ -86,12 +86,14 @@ namespace
                  "  --checked-dimensions N  largest principal extents the dimension checks compare with D (default %d)\n"
                  "  --no-rival-probe   do not probe rival poses (TensorRegistrationParams::probe_rivals)\n"
                  "  --rival-margin M   a rival with (1 - M) times the kept pose's fine correspondences is ambiguous (default %g)\n"
+                 "  --tr T, --tc T     tensor matching thresholds t_r and t_c, Eq. 5 and 6 (default %g, %g)\n"
                  "  --out DIR          CSVs: objects_pairs.csv, objects.csv (default %s)\n"
                  "  --data DIR         third-party data (default %s)\n",
                  name, d.ring, d.step, d.noise, d.threads, d.max_pairs,
                  d.params.verification.fine_dimension_tolerance, d.params.verification.fine_dimension_fraction,
                  d.params.verification.coarse_dimension_fraction,
-                 d.params.verification.empty_space_margin, d.params.verification.checked_dimensions, d.params.rival_margin, d.out.c_str (), d.data.c_str ());
+                 d.params.verification.empty_space_margin, d.params.verification.checked_dimensions, d.params.rival_margin,
+                 d.params.overlap_threshold, d.params.correlation_threshold, d.out.c_str (), d.data.c_str ());
   }
 
   std::string
@@ -343,6 +345,8 @@ namespace
     pcl::console::parse_argument (argc, argv, "--empty-space-margin", v.empty_space_margin);
     pcl::console::parse_argument (argc, argv, "--checked-dimensions", v.checked_dimensions);
     pcl::console::parse_argument (argc, argv, "--rival-margin", o.params.rival_margin);
+    pcl::console::parse_argument (argc, argv, "--tr", o.params.overlap_threshold);
+    pcl::console::parse_argument (argc, argv, "--tc", o.params.correlation_threshold);
     o.params.probe_rivals = !pcl::console::find_switch (argc, argv, "--no-rival-probe");
     return o;
   }
