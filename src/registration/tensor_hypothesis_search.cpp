@@ -44,10 +44,9 @@ namespace pcl
         constexpr double kRivalTranslation = 10.0;
 
         /** A rival needs less evidence than an answer: one that fails only the free-space check, by at
-          * most this many times free_space_fraction, still makes the pair ambiguous. A turned pose of a
-          * symmetric object and the truth both meet the strict check rarely; doubting on the weaker
-          * evidence keeps the stricter check from turning ambiguous pairs into wrong answers
-          * (doc/design.md#free-space-check). */
+          * most this many times free_space_fraction, still makes the pair ambiguous. The stricter the
+          * check, the fewer rivals pass it; doubting on weaker evidence keeps a strict check from turning
+          * ambiguous pairs into wrong answers (doc/design.md#free-space-check). */
         constexpr double kRivalFreeSpaceFactor = 5.0;
 
         /** Hypotheses that reached ICP and failed; a close repeat would fail the same way. */
