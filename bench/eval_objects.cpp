@@ -161,10 +161,10 @@ namespace
     pair.truth_covisibility = verification.covisibility (pair.truth.transform);
     if (pair.result.registered)
       pair.reported_covisibility = verification.covisibility (pair.reported.transform);
-    const double noise = 3.0 * std::hypot (model.prepared->noise, scene.prepared->noise), d_res = verification.getResolution ();
+    // The stage's margin (at least 2 d_res and 3 sigma), widened to 4 and 8 d_res.
     for (std::size_t k = 0; k < 3; ++k)
     {
-      const double margin = std::max (noise, (2 << k) * d_res);
+      const double margin = std::max (verification.getFreeSpaceMargin (), (2 << k) * verification.getResolution ());
       pair.truth_violation[k] = verification.freeSpaceViolation (pair.truth.transform, margin);
       if (pair.result.registered)
         pair.reported_violation[k] = verification.freeSpaceViolation (pair.reported.transform, margin);

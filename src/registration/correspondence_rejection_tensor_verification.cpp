@@ -281,7 +281,7 @@ namespace pcl
     }
 
     double
-    CorrespondenceRejectorTensorVerification::freeSpaceMargin () const
+    CorrespondenceRejectorTensorVerification::getFreeSpaceMargin () const
     {
       return std::max (params_.free_space_distance * getResolution (), 3.0 * std::hypot (model_->noise, scene_->noise));
     }
@@ -393,7 +393,7 @@ namespace pcl
       }
 
       // Beyond the paper: neither view may put surface where the other's sensor saw through.
-      result.free_space_violation = freeSpaceViolation (result.transform, freeSpaceMargin ());
+      result.free_space_violation = freeSpaceViolation (result.transform, getFreeSpaceMargin ());
       if (result.free_space_violation > params_.free_space_fraction)
       {
         result.stage = TensorVerificationStage::FREE_SPACE;
@@ -437,7 +437,7 @@ namespace pcl
     {
       prepare ();
       projectViews ();
-      const double radius = params_.fine_distance * getResolution (), margin = freeSpaceMargin ();
+      const double radius = params_.fine_distance * getResolution (), margin = getFreeSpaceMargin ();
       TensorCovisibility c;
       const auto scene = seenAndMatched (*scene_sample_, t, *model_view_, model_search_, margin, radius);
       const auto model = seenAndMatched (*model_sample_, inverseRigid (t), *scene_view_, scene_search_, margin, radius);

@@ -106,6 +106,10 @@ namespace pcl
           */
         TensorCovisibility covisibility (const Eigen::Matrix4f& t);
 
+        /** \brief The FREE_SPACE stage's margin: free_space_distance d_res, or three times the two views'
+          * combined noise (PreparedScan::noise) when larger. Needs the model and the scene. */
+        double getFreeSpaceMargin () const;
+
         /** \brief The larger, over both directions, fraction of the points of one view that the other's
           * sensor saw and that lie more than \a margin in front of its surface, under \a t (the FREE_SPACE
           * stage's measure, TensorVerificationResult::free_space_violation, at any margin).
@@ -157,8 +161,6 @@ namespace pcl
         PointToPlaneIcpResult icp (const Eigen::Matrix4f& hypothesis, std::size_t min_pairs) const;
         /** The z-buffers of both views, built once per pair, for the first hypothesis that needs them. */
         void projectViews ();
-        /** The free-space margin: free_space_distance d_res, or three times the views' combined noise. */
-        double freeSpaceMargin () const;
         /** max(D_combined - D) of the model points and the transformed scene points, in the best of
           * their combined principal frame and each view's own (registeredDimensionExcess). */
         double dimensionExcess (const PointCloudN& model, const PointCloudN& scene, const Eigen::Matrix4f& t) const;
