@@ -36,7 +36,7 @@ namespace
     print_info ("  --grid N           tensor grid size (default %d)\n", d.grid_size);
     print_info ("  --tr T             overlap ratio threshold t_r, Eq. 5 (default %g)\n", d.overlap_threshold);
     print_info ("  --tc T             correlation threshold t_c, Eq. 6 (default %g)\n", d.correlation_threshold);
-    print_info ("  --order best|scene order of hypotheses (default best)\n");
+    print_info ("  --order best|scene  order of hypotheses (default %s)\n", pcl::registration::tensorMatchOrderName (d.order));
     print_info ("  --max-hypotheses N give up after N hypotheses, 0 = all (default %d)\n", d.max_hypotheses);
     print_info ("  --scene-batches N  compute SCENE's tensors in N batches, each verified before the next (default %d)\n",
                 d.scene_tensor_batches);
@@ -68,12 +68,10 @@ namespace
     parse_argument (argc, argv, "--ambiguity-checks", p.ambiguity_checks);
     p.probe_rivals = !find_switch (argc, argv, "--no-rival-probe");
     parse_argument (argc, argv, "--dims-fraction", p.verification.fine_dimension_fraction);
-    std::string order = "best";
+    std::string order;
     parse_argument (argc, argv, "--order", order);
-    if (order == "scene")
-      p.order = pcl::registration::TensorMatchOrder::SCENE_ORDER;
-    else if (order != "best")
-      PCL_TENSOR_THROW (pcl::BadArgumentException, "--order must be 'best' or 'scene', got '" << order << "'");
+    if (!order.empty ())
+      p.order = pcl::registration::parseTensorMatchOrder (order);
     std::string count = p.verification.count_both_views ? "both" : "scene";
     parse_argument (argc, argv, "--count", count);
     if (count != "both" && count != "scene")

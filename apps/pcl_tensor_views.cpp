@@ -46,6 +46,13 @@ namespace
     print_info ("    --size W H          image size in pixels (default: "); print_value ("%d %d", d.camera.width, d.camera.height); print_info (")\n");
     print_info ("    --fov DEG           horizontal field of view in degrees (default: "); print_value ("%g", d.camera.fov_deg); print_info (")\n");
     print_info ("    --ortho             orthographic camera instead of perspective (default: "); print_value ("off"); print_info (")\n");
+    print_info ("    --pushbroom         pushbroom (line-scan) camera: columns swept in parallel, each a fan of rays (default: "); print_value ("off"); print_info (")\n");
+    const pcl::ScannerArtifactParams a, s = pcl::scannerLikeArtifacts ();
+    print_info ("    --dropout DEG       surfaces turned more than DEG from the ray start to drop out (default: "); print_value ("%g", a.dropout_start_deg); print_info (": none)\n");
+    print_info ("    --holes N           holes per view (default: "); print_value ("%d", a.holes); print_info ("), of --hole-radius PX pixels (default: "); print_value ("%g", a.hole_radius_pixels); print_info (")\n");
+    print_info ("    --specks N          stray specks per view (default: "); print_value ("%d", a.specks); print_info ("), of up to --speck-pixels N (default: "); print_value ("%d", a.speck_pixels); print_info (")\n");
+    print_info ("    --scanner           all of them, moderately: --dropout %g --holes %d --hole-radius %g --specks %d --speck-pixels %d\n",
+                s.dropout_start_deg, s.holes, s.hole_radius_pixels, s.specks, s.speck_pixels);
     print_info ("    --seed S            seed of the noise's std::mt19937 (default: "); print_value ("%u", d.seed); print_info (")\n");
     const pcl::ExampleObjectParams e;
     print_info ("    --example-seed S    another built-in object: the seed of its bumps (default: "); print_value ("%u", e.seed); print_info (")\n");
@@ -121,6 +128,14 @@ namespace
     parse_argument (argc, argv, "--fov", o.params.camera.fov_deg);
     parse_argument (argc, argv, "--seed", o.params.seed);
     o.params.camera.orthographic = find_switch (argc, argv, "--ortho");
+    o.params.camera.pushbroom = find_switch (argc, argv, "--pushbroom");
+    if (find_switch (argc, argv, "--scanner"))
+      o.params.artifacts = pcl::scannerLikeArtifacts ();
+    parse_argument (argc, argv, "--dropout", o.params.artifacts.dropout_start_deg);
+    parse_argument (argc, argv, "--holes", o.params.artifacts.holes);
+    parse_argument (argc, argv, "--hole-radius", o.params.artifacts.hole_radius_pixels);
+    parse_argument (argc, argv, "--specks", o.params.artifacts.specks);
+    parse_argument (argc, argv, "--speck-pixels", o.params.artifacts.speck_pixels);
     parse_argument (argc, argv, "--example-seed", o.example.seed);
     parse_argument (argc, argv, "--example-size", o.example.size);
     if (!(o.example.size > 0.0))

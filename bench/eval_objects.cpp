@@ -17,6 +17,7 @@
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
 #include <pcl/io/scan_mesh_io.h>
+#include <pcl/registration/correspondence_estimation_tensor.h>
 #include <pcl/registration/pose_conditioning.h>
 #include <pcl/simulation/example_object.h>
 #include <pcl/simulation/view_set.h>
@@ -40,6 +41,8 @@ namespace
     std::string out = "bench_results";
     std::vector<std::string> objects;  ///< empty: every object
     bool real = false, meshes = false, truth = false;
+    bool pushbroom = false, scanner = false;
+    int specks = -1;  ///< with --scanner: specks per view instead of the preset's (-1: the preset's)
     int ring = 12;
     double step = 30.0, noise = 0.3;
     int threads = 1;
@@ -77,6 +80,9 @@ namespace
                  "  --ring N           rendered views per ring (default %d)\n"
                  "  --step DEG         azimuth step of the ring (default %g)\n"
                  "  --noise S          noise along the rays, sigma in d_res (default %g)\n"
+                 "  --pushbroom        render with a pushbroom (line-scan) camera instead of a perspective one\n"
+                 "  --scanner          render with scanner artifacts (pcl::scannerLikeArtifacts: dropout, holes, specks)\n"
+                 "  --specks N         with --scanner: N specks per view instead of the preset's\n"
                  "  --threads N        pairs registered at once (default %d; times are per pair, one core each)\n"
                  "  --max-pairs N      only the first N pairs of each set, 0 = all (default %d)\n"
                  "  --fine-dimension-tolerance T   local verification after ICP: allowed excess over D in d_res (default %g)\n"
@@ -87,13 +93,15 @@ namespace
                  "  --no-rival-probe   do not probe rival poses (TensorRegistrationParams::probe_rivals)\n"
                  "  --rival-margin M   a rival with (1 - M) times the kept pose's fine correspondences is ambiguous (default %g)\n"
                  "  --tr T, --tc T     tensor matching thresholds t_r and t_c, Eq. 5 and 6 (default %g, %g)\n"
+                 "  --order O          order of hypotheses: best or scene (default %s)\n"
                  "  --out DIR          CSVs: objects_pairs.csv, objects.csv (default %s)\n"
                  "  --data DIR         third-party data (default %s)\n",
                  name, d.ring, d.step, d.noise, d.threads, d.max_pairs,
                  d.params.verification.fine_dimension_tolerance, d.params.verification.fine_dimension_fraction,
                  d.params.verification.coarse_dimension_fraction,
                  d.params.verification.empty_space_margin, d.params.verification.checked_dimensions, d.params.rival_margin,
-                 d.params.overlap_threshold, d.params.correlation_threshold, d.out.c_str (), d.data.c_str ());
+                 d.params.overlap_threshold, d.params.correlation_threshold,
+                 pcl::registration::tensorMatchOrderName (d.params.order), d.out.c_str (), d.data.c_str ());
   }
 
   std::string
@@ -107,6 +115,11 @@ namespace
   {
     pcl::SyntheticViewParams params;
     params.noise_sigma_resolutions = o.noise;
+    params.camera.pushbroom = o.pushbroom;
+    if (o.scanner)
+      params.artifacts = pcl::scannerLikeArtifacts ();
+    if (o.scanner && o.specks >= 0)
+      params.artifacts.specks = o.specks;
     return makeSyntheticViews (mesh, params, pcl::makeRingViewDirections (o.ring, o.step));
   }
 
@@ -336,6 +349,9 @@ namespace
     pcl::console::parse_argument (argc, argv, "--ring", o.ring);
     pcl::console::parse_argument (argc, argv, "--step", o.step);
     pcl::console::parse_argument (argc, argv, "--noise", o.noise);
+    o.pushbroom = pcl::console::find_switch (argc, argv, "--pushbroom");
+    o.scanner = pcl::console::find_switch (argc, argv, "--scanner");
+    pcl::console::parse_argument (argc, argv, "--specks", o.specks);
     pcl::console::parse_argument (argc, argv, "--threads", o.threads);
     pcl::console::parse_argument (argc, argv, "--max-pairs", o.max_pairs);
     auto& v = o.params.verification;
@@ -347,6 +363,9 @@ namespace
     pcl::console::parse_argument (argc, argv, "--rival-margin", o.params.rival_margin);
     pcl::console::parse_argument (argc, argv, "--tr", o.params.overlap_threshold);
     pcl::console::parse_argument (argc, argv, "--tc", o.params.correlation_threshold);
+    std::string order;
+    if (pcl::console::parse_argument (argc, argv, "--order", order) >= 0)
+      o.params.order = pcl::registration::parseTensorMatchOrder (order);
     o.params.probe_rivals = !pcl::console::find_switch (argc, argv, "--no-rival-probe");
     return o;
   }

@@ -111,6 +111,29 @@ TEST (TransformFromTensorPair, RecoversAKnownRigidMotion)
   }
 }
 
+TEST (TransformFromTensorMatch, EqualsThePairInTheOrderThatMatched)
+{
+  std::mt19937 rng (5);
+  pcl::PointCloud<pcl::TensorDescriptor> model, scene;
+  for (int k = 0; k < 4; ++k)
+  {
+    const Eigen::Matrix3f frame = pcl_tensor_test::randomRigidTransform (rng, 0.0).linear ().cast<float> ();
+    model.push_back (framedTensor (frame.transpose (), Eigen::Vector3f (0.1f * k, 0.2f, -0.1f)));
+    const Eigen::Matrix3f other = pcl_tensor_test::randomRigidTransform (rng, 0.0).linear ().cast<float> ();
+    scene.push_back (framedTensor (other.transpose (), Eigen::Vector3f (-0.3f, 0.05f * k, 0.4f)));
+  }
+  for (const bool flipped : {false, true})
+  {
+    pcl::registration::TensorMatch match;
+    match.model = 2;
+    match.scene = 1;
+    match.scene_flipped = flipped;
+    const Eigen::Matrix4f expected =
+        pcl::registration::transformFromTensorPair (model[2], flipped ? pcl::flipPairOrder (scene[1]) : scene[1]);
+    EXPECT_TRUE (pcl::registration::transformFromTensorMatch (match, model, scene).isApprox (expected, 1e-6f)) << "flipped " << flipped;
+  }
+}
+
 TEST (TensorBinSet, SharedBinsAndOverlapEqualTheComparators)
 {
   std::mt19937 rng (11);

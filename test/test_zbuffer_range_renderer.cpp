@@ -335,3 +335,63 @@ TEST (ZBufferRangeRenderer, BunnyViewsLieOnTheMesh)
   PCL_TENSOR_REQUIRE_SHARED_DATA (path, "stanford/bunny/bun_zipper.ply");
   expectViewsOnMesh (pcl::io::loadScanMesh (path), pcl::makeDefaultViewDirections (), 200);
 }
+
+// A pushbroom camera sweeps its columns in parallel (x = the column's place on the sensor line) and
+// fans each column's rows (y / -z = the row's slope); its view says so, and every hit lies on the sphere.
+TEST (ZBufferRangeRenderer, PushbroomColumnsAreParallelAndRowsFanOut)
+{
+  const double r = 0.1;
+  const Eigen::Vector3d centre (0.0, 0.0, -1.0);
+  const auto mesh = icosphere (5, r, centre);
+  const double sag = maxChordSag (mesh, r);
+  pcl::RangeCameraParams camera;
+  camera.width = 80;
+  camera.height = 60;
+  camera.pushbroom = true;
+  camera.ortho_extent = 0.25;
+  camera.fov_deg = 20.0;
+  pcl::ZBufferRangeRenderer renderer;
+  renderer.setCameraParams (camera);
+  renderer.setMesh (mesh);
+  const auto view = renderer.render (Eigen::Affine3d::Identity ());
+  EXPECT_EQ (view.viewpoint.model, pcl::ScanViewpoint::Model::pushbroom);
+  const double pixel = camera.ortho_extent / camera.width;
+  const double f = 0.5 * camera.width / std::tan (0.5 * camera.fov_deg * M_PI / 180.0);
+  int finite = 0;
+  for (int row = 0; row < camera.height; ++row)
+    for (int col = 0; col < camera.width; ++col)
+    {
+      const auto& p = view.cloud->at (col, row);
+      if (!pcl::isXYZFinite (p))
+        continue;
+      ++finite;
+      EXPECT_NEAR (p.x, (col + 0.5 - 0.5 * camera.width) * pixel, 1e-6);
+      EXPECT_NEAR (p.y / -p.z, (0.5 * camera.height - row - 0.5) / f, 1e-6);
+      const double radial = (p.getVector3fMap ().cast<double> () - centre).norm ();
+      EXPECT_LE (radial, r + 1e-6);
+      EXPECT_GE (radial, r - sag - 1e-6);
+      // The sensor is back along the line of sight, toward the sweep axis.
+      const Eigen::Vector3d back = view.viewpoint.towardSensor (p.getVector3fMap ().cast<double> ());
+      EXPECT_NEAR (back.x (), 0.0, 1e-9);
+      EXPECT_GT (back.z (), 0.0);
+    }
+  // Columns within r of the axis see the sphere: about 2 r / pixel of the 80.
+  int columns = 0;
+  for (int col = 0; col < camera.width; ++col)
+  {
+    bool seen = false;
+    for (int row = 0; row < camera.height; ++row)
+      seen = seen || pcl::isXYZFinite (view.cloud->at (col, row));
+    columns += seen;
+  }
+  EXPECT_NEAR (columns, 2.0 * r / pixel, 2.0);
+  EXPECT_GT (finite, 0);
+}
+
+TEST (ZBufferRangeRenderer, OrthographicAndPushbroomTogetherAreRefused)
+{
+  pcl::RangeCameraParams camera;
+  camera.orthographic = camera.pushbroom = true;
+  pcl::ZBufferRangeRenderer renderer;
+  EXPECT_THROW (renderer.setCameraParams (camera), pcl::BadArgumentException);
+}

@@ -37,9 +37,7 @@ namespace pcl_tensor_eval
     long rank = 0;
     for (const TensorMatch& match : estimation.getMatches ())
     {
-      const pcl::TensorDescriptor& scene_tensor = (*scene.tensors)[match.scene];
-      const Eigen::Matrix4f hypothesis = transformFromTensorPair ((*model.tensors)[match.model],
-                                                                  match.scene_flipped ? flipPairOrder (scene_tensor) : scene_tensor);
+      const Eigen::Matrix4f hypothesis = transformFromTensorMatch (match, *model.tensors, *scene.tensors);
       const pcl::RegistrationError e = pcl::registrationError (Eigen::Affine3d (hypothesis.cast<double> ()), truth, d_res);
       const bool good = e.rotation_deg <= kGoodHypothesisRotationDeg && e.translation_resolutions <= kGoodHypothesisTranslationResolutions;
       TensorVerificationResult result;

@@ -113,6 +113,26 @@ namespace pcl
         correspondences.emplace_back (m.scene, m.model, 1.0f - m.correlation);
     }
 
+    const char*
+    tensorMatchOrderName (TensorMatchOrder order)
+    {
+      switch (order)
+      {
+        case TensorMatchOrder::SCENE_ORDER: return "scene";
+        case TensorMatchOrder::BEST_FIRST: return "best";
+      }
+      return "unknown";
+    }
+
+    TensorMatchOrder
+    parseTensorMatchOrder (const std::string& name)
+    {
+      for (const TensorMatchOrder order : {TensorMatchOrder::SCENE_ORDER, TensorMatchOrder::BEST_FIRST})
+        if (name == tensorMatchOrderName (order))
+          return order;
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "match order must be 'scene' or 'best', got '" << name << "'");
+    }
+
     void
     sortTensorMatches (std::vector<TensorMatch>& matches, TensorMatchOrder order)
     {

@@ -476,16 +476,18 @@ namespace pcl
             || c.index_match < 0 || static_cast<std::size_t> (c.index_match) >= model_tensors_->size ())
           PCL_TENSOR_THROW (BadArgumentException, "correspondence " << c.index_query << " -> " << c.index_match
                             << " is outside the tensor clouds");
-        const TensorDescriptor& model = (*model_tensors_)[c.index_match];
-        const TensorDescriptor& scene = (*scene_tensors_)[c.index_query];
+        TensorMatch match;
+        match.model = c.index_match;
+        match.scene = c.index_query;
+        match.scene_flipped = !input_matches_.empty () && input_matches_[i].scene_flipped;
         TensorVerificationResult result;
-        bool passed;
-        if (!input_matches_.empty ())
-          passed = verify (transformFromTensorPair (model, input_matches_[i].scene_flipped ? flipPairOrder (scene) : scene), result);
-        else
-          // A bare correspondence does not say which pair order matched: an ambiguous one is tried in both.
-          passed = verify (transformFromTensorPair (model, scene), result)
-                   || (scene.order_ambiguous && verify (transformFromTensorPair (model, flipPairOrder (scene)), result));
+        bool passed = verify (transformFromTensorMatch (match, *model_tensors_, *scene_tensors_), result);
+        // A bare correspondence does not say which pair order matched: an ambiguous one is tried in both.
+        if (!passed && input_matches_.empty () && (*scene_tensors_)[c.index_query].order_ambiguous)
+        {
+          match.scene_flipped = true;
+          passed = verify (transformFromTensorMatch (match, *model_tensors_, *scene_tensors_), result);
+        }
         results_.push_back (result);
         if (passed)
         {

@@ -71,14 +71,6 @@ namespace pcl
             std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> refuted_;
         };
 
-        /** The hypothesis of one match (Eq. 7-8), with the scene tensor in the order that matched. */
-        Eigen::Matrix4f
-        hypothesisOf (const TensorMatch& match, const TensorCloud& model_tensors, const TensorCloud& scene_tensors)
-        {
-          const TensorDescriptor& scene = scene_tensors[match.scene];
-          return transformFromTensorPair (model_tensors[match.model], match.scene_flipped ? flipPairOrder (scene) : scene);
-        }
-
         /** The report of a registration about to start: nothing tried, nothing found. */
         void
         resetReport (TensorRegistrationReport& report, std::size_t model_tensors, const ObjectDimensions& dims)
@@ -250,7 +242,7 @@ namespace pcl
               int checks = 0;
               for (std::size_t k = from; k < matches.size () && checks < params_.ambiguity_checks; ++k)
               {
-                const Eigen::Matrix4f hypothesis = hypothesisOf (matches[k], *model_tensors_, *batch);
+                const Eigen::Matrix4f hypothesis = transformFromTensorMatch (matches[k], *model_tensors_, *batch);
                 if (posesAgree (hypothesis, pose, scene_centroid_, params_.ambiguity_rotation, far_distance_) || refuted_.contains (hypothesis))
                   continue;
                 ++checks;
@@ -320,7 +312,7 @@ namespace pcl
                 if (capReached ())
                   return true;
                 const TensorMatch& match = matches[k];
-                const Eigen::Matrix4f hypothesis = hypothesisOf (match, *model_tensors_, *batch);
+                const Eigen::Matrix4f hypothesis = transformFromTensorMatch (match, *model_tensors_, *batch);
                 if (refuted_.contains (hypothesis))
                 {
                   ++report_.hypotheses_skipped;

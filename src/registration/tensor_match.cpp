@@ -88,15 +88,40 @@ namespace pcl
       match.correlation = static_cast<float> ((n * spq - sp * sq) / std::sqrt (var_p * var_q));  // Eq. 6
     }
 
+    namespace
+    {
+      using Frame = Eigen::Matrix<float, 3, 3, Eigen::RowMajor>;
+
+      /** Eq. 7-8 from the two frames (rows: x, y, z axes) and origins. */
+      Eigen::Matrix4f
+      transformFromFrames (const Frame& b_m, const Eigen::Vector3f& o_m, const Frame& b_s, const Eigen::Vector3f& o_s)
+      {
+        const Eigen::Matrix3f r = b_m.transpose () * b_s;
+        Eigen::Matrix4f t = Eigen::Matrix4f::Identity ();
+        t.topLeftCorner<3, 3> () = r;
+        t.topRightCorner<3, 1> () = o_m - r * o_s;
+        return t;
+      }
+    }
+
     Eigen::Matrix4f
     transformFromTensorPair (const TensorDescriptor& model, const TensorDescriptor& scene)
     {
-      const Eigen::Map<const Eigen::Matrix<float, 3, 3, Eigen::RowMajor>> b_m (model.rf), b_s (scene.rf);
-      const Eigen::Matrix3f r = b_m.transpose () * b_s;
-      Eigen::Matrix4f t = Eigen::Matrix4f::Identity ();
-      t.topLeftCorner<3, 3> () = r;
-      t.topRightCorner<3, 1> () = model.getVector3fMap () - r * scene.getVector3fMap ();
-      return t;
+      return transformFromFrames (Eigen::Map<const Frame> (model.rf), model.getVector3fMap (), Eigen::Map<const Frame> (scene.rf),
+                                  scene.getVector3fMap ());
+    }
+
+    Eigen::Matrix4f
+    transformFromTensorMatch (const TensorMatch& match, const pcl::PointCloud<TensorDescriptor>& model_tensors,
+                              const pcl::PointCloud<TensorDescriptor>& scene_tensors)
+    {
+      const TensorDescriptor& model = model_tensors[match.model];
+      const TensorDescriptor& scene = scene_tensors[match.scene];
+      Frame b_s = Eigen::Map<const Frame> (scene.rf);
+      // The swapped pair order turns the frame half a turn about its z axis (flipPairOrder()).
+      if (match.scene_flipped)
+        b_s.topRows<2> () *= -1.0f;
+      return transformFromFrames (Eigen::Map<const Frame> (model.rf), model.getVector3fMap (), b_s, scene.getVector3fMap ());
     }
   }
 }

@@ -32,7 +32,7 @@ namespace pcl
     ZBufferRangeRenderer renderer;
     renderer.setMesh (model);
     renderer.setCameraParams (params.camera);
-    std::mt19937 rng (params.seed);
+    std::mt19937 rng (params.seed), artifact_rng (params.seed ^ 0x5ca1ab1eu);
     std::vector<SyntheticView> views;
     views.reserve (poses.size ());
     for (const auto& pose : poses)
@@ -40,6 +40,7 @@ namespace pcl
       SyntheticView v;
       v.view = renderer.render (pose);
       v.resolution = viewResolution (v.view);
+      addScannerArtifacts (v.view, params.artifacts, artifact_rng);
       // Noise is scaled by the clean view's own resolution, as in Section 7.5.
       if (params.noise_sigma_resolutions > 0.0)
         addViewingDirectionNoise (*v.view.cloud, v.view.viewpoint, params.noise_sigma_resolutions * v.resolution, rng);
@@ -53,7 +54,8 @@ namespace pcl
   {
     const ViewTarget target = boundingTarget (model);
     SyntheticViewParams fitted = params;
-    if (fitted.camera.orthographic)
+    // A pushbroom sweeps the object's width like an orthographic camera and fans over its height.
+    if (fitted.camera.orthographic || fitted.camera.pushbroom)
       fitted.camera.ortho_extent = fittingOrthoExtent (target, fitted.camera, params.margin);
     const double distance = fittingDistance (target, fitted.camera, params.margin);
     return renderSyntheticViews (model, lookAtPoses (directions, target, distance, params.up), fitted);

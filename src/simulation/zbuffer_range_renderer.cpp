@@ -86,9 +86,11 @@ namespace pcl
     if (!params.orthographic && !(params.fov_deg > 0.0 && params.fov_deg < 180.0))
       PCL_TENSOR_THROW (pcl::BadArgumentException, "range camera field of view must be in (0, 180) degrees, got "
                         << params.fov_deg);
-    if (params.orthographic && !(params.ortho_extent > 0.0 && std::isfinite (params.ortho_extent)))
+    if ((params.orthographic || params.pushbroom) && !(params.ortho_extent > 0.0 && std::isfinite (params.ortho_extent)))
       PCL_TENSOR_THROW (pcl::BadArgumentException, "orthographic extent must be positive, got "
                         << params.ortho_extent);
+    if (params.orthographic && params.pushbroom)
+      PCL_TENSOR_THROW (pcl::BadArgumentException, "a range camera is orthographic or pushbroom, not both");
     params_ = params;
   }
 
@@ -98,10 +100,13 @@ namespace pcl
     const double x = col + 0.5 - 0.5 * params_.width;
     const double y = 0.5 * params_.height - (row + 0.5);
     PixelRay ray;
+    const double pixel = params_.ortho_extent / params_.width;
     if (params_.orthographic)
-    {
-      const double pixel = params_.ortho_extent / params_.width;
       ray.origin = Eigen::Vector3d (x * pixel, y * pixel, 0.0);
+    else if (params_.pushbroom)
+    {
+      ray.origin = Eigen::Vector3d (x * pixel, 0.0, 0.0);
+      ray.direction = Eigen::Vector3d (0.0, y / focalLength (params_), -1.0);
     }
     else
     {
@@ -129,13 +134,15 @@ namespace pcl
     }
     else
     {
-      const double scale = params_.orthographic ? params_.width / params_.ortho_extent : focalLength (params_);
+      // Columns: perspective, or parallel (orthographic, pushbroom); rows: parallel only when orthographic.
+      const double f = focalLength (params_), per_metre = params_.width / params_.ortho_extent;
       for (const auto* p : v)
       {
-        const double w = params_.orthographic ? 1.0 : -p->z ();
-        const double col = scale * p->x () / w + 0.5 * params_.width - 0.5;
-        const double row = 0.5 * params_.height - 0.5 - scale * p->y () / w;
-        cmin = std::min (cmin, col); cmax = std::max (cmax, col);
+        const double col = (params_.orthographic || params_.pushbroom) ? per_metre * p->x () : f * p->x () / -p->z ();
+        const double row_offset = params_.orthographic ? per_metre * p->y () : f * p->y () / -p->z ();
+        const double col_pixel = col + 0.5 * params_.width - 0.5;
+        const double row = 0.5 * params_.height - 0.5 - row_offset;
+        cmin = std::min (cmin, col_pixel); cmax = std::max (cmax, col_pixel);
         rmin = std::min (rmin, row); rmax = std::max (rmax, row);
       }
     }
@@ -179,7 +186,9 @@ namespace pcl
     RenderedView view;
     view.pose = sensor_pose;
     view.viewpoint.sensor_pose = Eigen::AngleAxisd (M_PI, Eigen::Vector3d::UnitX ());
-    view.viewpoint.model = params_.orthographic ? ScanViewpoint::Model::orthographic : ScanViewpoint::Model::perspective;
+    view.viewpoint.model = params_.orthographic ? ScanViewpoint::Model::orthographic
+                           : params_.pushbroom  ? ScanViewpoint::Model::pushbroom
+                                                : ScanViewpoint::Model::perspective;
     auto& cloud = *view.cloud;
     cloud.resize (static_cast<std::size_t> (w) * h);
     cloud.width = static_cast<std::uint32_t> (w);

@@ -8,6 +8,7 @@
 #include <pcl/registration/correspondence_estimation.h>
 #include <pcl/registration/tensor_match.h>
 
+#include <string>
 #include <vector>
 
 namespace pcl
@@ -22,6 +23,15 @@ namespace pcl
       /** All matches of all scene tensors, highest correlation C_c first. */
       BEST_FIRST
     };
+
+    /** \brief The order's name on a command line: "scene" or "best". */
+    const char*
+    tensorMatchOrderName (TensorMatchOrder order);
+
+    /** \brief The order named \a name (tensorMatchOrderName()).
+      * \throw pcl::BadArgumentException for any other name */
+    TensorMatchOrder
+    parseTensorMatchOrder (const std::string& name);
 
     /** \brief Put \a matches in \a order (stable: ties keep their order). */
     void

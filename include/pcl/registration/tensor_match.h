@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pcl/features/tensor_descriptor.h>
+#include <pcl/point_cloud.h>
 
 #include <Eigen/Geometry>
 
@@ -90,5 +91,14 @@ namespace pcl
       */
     Eigen::Matrix4f
     transformFromTensorPair (const TensorDescriptor& model, const TensorDescriptor& scene);
+
+    /** \brief The hypothesis of one match (Eq. 7-8): transformFromTensorPair() of its model tensor and
+      * its scene tensor, in the pair order that matched (TensorMatch::scene_flipped), without copying
+      * the bins as flipPairOrder() does.
+      * \param[in] match its indices refer to \a model_tensors and \a scene_tensors
+      */
+    Eigen::Matrix4f
+    transformFromTensorMatch (const TensorMatch& match, const pcl::PointCloud<TensorDescriptor>& model_tensors,
+                              const pcl::PointCloud<TensorDescriptor>& scene_tensors);
   }
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pcl/common/scan_mesh.h>
+#include <pcl/simulation/scanner_artifacts.h>
 #include <pcl/simulation/view_set.h>
 #include <pcl/simulation/zbuffer_range_renderer.h>
 
@@ -25,6 +26,9 @@ namespace pcl
     double noise_sigma_resolutions = 0.0;
     /** Seed of the std::mt19937 that draws the noise; the views are noised in order from one engine. */
     std::uint32_t seed = 2006;
+    /** What a real scanner loses and adds (addScannerArtifacts()), applied before the noise and drawn
+      * from an engine of its own, so that the noise is the same with and without them. Default: none. */
+    ScannerArtifactParams artifacts;
     /** The model's up axis: the poles of the default view set, and the cameras' image up direction. */
     Eigen::Vector3d up = Eigen::Vector3d::UnitY ();
   };

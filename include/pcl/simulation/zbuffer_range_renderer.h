@@ -28,7 +28,11 @@ namespace pcl
     double fov_deg = 40.0;
     /** True for an orthographic camera (parallel rays along -z, starting on the plane z = 0). */
     bool orthographic = false;
-    /** Width of the orthographic camera's field, in metres (pixels are square). */
+    /** True for a pushbroom (line-scan) camera, as laser stripe scanners sweep: each column is a fan
+      * of rays in its own plane x = const, from a sensor line along x (columns ortho_extent / width
+      * apart, the fan's focal length that of fov_deg over the width). Not with orthographic. */
+    bool pushbroom = false;
+    /** Width of the orthographic camera's field, or the pushbroom's sweep, in metres. */
     double ortho_extent = 0.3;
   };
 
@@ -50,9 +54,11 @@ namespace pcl
     */
   struct PixelRay
   {
-    /** Perspective: the sensor's centre (0, 0, 0); orthographic: the pixel centre on the plane z = 0. */
+    /** Perspective: the sensor's centre (0, 0, 0); orthographic: the pixel centre on the plane z = 0;
+      * pushbroom: the column's point on the sensor line (x, 0, 0). */
     Eigen::Vector3d origin = Eigen::Vector3d::Zero ();
-    /** Not normalized: the perspective direction has z = -1, the orthographic one is (0, 0, -1). */
+    /** Not normalized: the perspective and pushbroom directions have z = -1 (a pushbroom's x = 0), the
+      * orthographic one is (0, 0, -1). */
     Eigen::Vector3d direction = -Eigen::Vector3d::UnitZ ();
   };
 
