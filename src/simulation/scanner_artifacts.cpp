@@ -27,6 +27,13 @@ namespace pcl
         PCL_TENSOR_THROW (BadArgumentException, "scanner artifacts need an organized rendering");
     }
 
+    /** Make \a p a pixel without a return, as the renderer leaves one. */
+    void
+    clearPoint (pcl::PointXYZ& p)
+    {
+      p.x = p.y = p.z = std::numeric_limits<float>::quiet_NaN ();
+    }
+
     bool
     finiteAt (const Cloud& cloud, int col, int row)
     {
@@ -76,7 +83,6 @@ namespace pcl
         return;
       const std::vector<float> cosines = viewingCosines (view);
       std::uniform_real_distribution<double> uniform (0.0, 1.0);
-      const float nan = std::numeric_limits<float>::quiet_NaN ();
       for (std::size_t i = 0; i < cosines.size (); ++i)
       {
         if (std::isnan (cosines[i]))
@@ -85,7 +91,7 @@ namespace pcl
         const double p_drop = (angle - start_deg) / (90.0 - start_deg);
         // One draw per surface pixel whatever its angle, so that the pattern does not shift with the ramp.
         if (uniform (rng) < p_drop)
-          (*view.cloud)[i].x = (*view.cloud)[i].y = (*view.cloud)[i].z = nan;
+          clearPoint ((*view.cloud)[i]);
       }
     }
 
@@ -120,7 +126,6 @@ namespace pcl
       if (pixels.empty ())
         return;
       std::uniform_real_distribution<double> scale (0.5, 1.5);
-      const float nan = std::numeric_limits<float>::quiet_NaN ();
       for (int h = 0; h < params.holes; ++h)
       {
         const std::size_t centre = pixels.draw (rng);
@@ -130,10 +135,7 @@ namespace pcl
         for (int row = std::max (0, cr - reach); row <= std::min (static_cast<int> (cloud.height) - 1, cr + reach); ++row)
           for (int col = std::max (0, cc - reach); col <= std::min (static_cast<int> (cloud.width) - 1, cc + reach); ++col)
             if ((col - cc) * (col - cc) + (row - cr) * (row - cr) <= radius * radius)
-            {
-              auto& p = cloud.at (col, row);
-              p.x = p.y = p.z = nan;
-            }
+              clearPoint (cloud.at (col, row));
       }
     }
 
