@@ -31,6 +31,8 @@ namespace
     print_info ("  --normal-radius R    radius of approach (b), in d_res (default "); print_value ("%g", d.normal_radius_resolutions); print_info (")\n");
     print_info ("  --stray-gap G        fragments over G d_res from the rest of the scan ... (default "); print_value ("%g", d.stray_fragment_gap); print_info (")\n");
     print_info ("  --stray-fraction F   ... with under F of its points are removed; 0 keeps all (default "); print_value ("%g", d.stray_fragment_fraction); print_info (")\n");
+    print_info ("  --speck-max N        groups of up to N pixels in front of the surface on every side ... (default "); print_value ("%d", d.speck_max_pixels); print_info (")\n");
+    print_info ("  --speck-jump J       ... by over J grid spacings are removed; --speck-max 0 keeps all (default "); print_value ("%g", d.speck_jump); print_info (")\n");
     print_info ("  --viewpoint x,y,z    perspective sensor at x,y,z looking at the scan (default: a PCD's pose; the pushbroom a PLY grid fits; else +z)\n");
     print_info ("Exit codes: 0 done, 2 bad input or usage.\n");
   }
@@ -45,6 +47,8 @@ namespace
     parse_argument (argc, argv, "--normal-radius", params.normal_radius_resolutions);
     parse_argument (argc, argv, "--stray-gap", params.stray_fragment_gap);
     parse_argument (argc, argv, "--stray-fraction", params.stray_fragment_fraction);
+    parse_argument (argc, argv, "--speck-max", params.speck_max_pixels);
+    parse_argument (argc, argv, "--speck-jump", params.speck_jump);
     std::string normals = "fine";
     parse_argument (argc, argv, "--normals", normals);
     if (normals == "face")

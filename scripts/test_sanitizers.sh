@@ -21,8 +21,10 @@ else
   # Left out, to keep CI near 50 min: the two-object and cached re-run app tests repeat, as whole runs,
   # what TwoObjectsMakeTwoComponents and CachedViewsRegisterAsTheFirstRunDid check under the
   # sanitizers; the 26-view model (about 19 min sanitized, 17 s in Release) runs stages that
-  # ScanVolumetricIntegration and the multiview tests each check here on fewer views.
-  selection=(-E '^(downstream_find_package|app_model_two_objects_two_models|app_model_cache_rerun|ModelFromViews\.ExampleObjectIsRebuiltFromItsRegisteredSyntheticViews)$')
+  # ScanVolumetricIntegration and the multiview tests each check here on fewer views. The Dask driver's
+  # test (two workers, both cores, about 5 min sanitized) runs the prepare and pairs commands that
+  # app_pairs_rank_and_register and the cache tests run here alone.
+  selection=(-E '^(downstream_find_package|app_model_two_objects_two_models|app_model_cache_rerun|app_dask_same_poses|ModelFromViews\.ExampleObjectIsRebuiltFromItsRegisteredSyntheticViews)$')
 fi
 source scripts/sanitizer_env.sh
 cd build-sanitize

@@ -126,3 +126,39 @@ TEST (PoseConditioning, RivalPosesFollowTheFreeMotions)
   // No pairs, no rivals.
   EXPECT_TRUE (pcl::registration::rivalPoses (pcl::registration::PoseConditioning (), Eigen::Matrix4f::Identity (), 2, {0.35}).empty ());
 }
+
+// A cone's patch leaves one motion free, the turn about its axis (y, off the patch's centroid). Turned
+// along that screw by 90, 135 and 180 degrees, every point stays on the cone at its own height,
+// however far the turn.
+TEST (PoseConditioning, RivalTurnsFollowTheScrewOfASurfaceOfRevolution)
+{
+  const auto radius = [] (float y) { return 0.05f + 0.3f * y; };
+  const Cloud cone = surface ([&] (float u, float v) { return Eigen::Vector3f (radius (v) * std::sin (10.0f * u), v, radius (v) * std::cos (10.0f * u)); },
+                              [] (const Eigen::Vector3f& p) {
+                                const float r = std::hypot (p.x (), p.z ());
+                                return Eigen::Vector3f (p.x () / r, -0.3f, p.z () / r);
+                              });
+  const auto c = conditioningOnItself (cone);
+  ASSERT_EQ (freeMotions (c), 1);
+  const std::vector<double> turns{0.5 * M_PI, 0.75 * M_PI, M_PI};
+  const auto rivals = pcl::registration::screwTurnPoses (c, Eigen::Matrix4f::Identity (), turns);
+  ASSERT_EQ (rivals.size (), 5u) << "each turn both ways, a half turn once";
+  const double expected[] = {90.0, 90.0, 135.0, 135.0, 180.0};
+  for (std::size_t k = 0; k < 5; ++k)
+  {
+    const Eigen::Matrix4f& t = rivals[k];
+    const Eigen::AngleAxisf turn (Eigen::Matrix3f (t.topLeftCorner<3, 3> ()));
+    EXPECT_NEAR (turn.angle () * 180.0 / M_PI, expected[k], 1e-3) << "turn " << k;
+    EXPECT_NEAR (std::abs (turn.axis ().y ()), 1.0f, 1e-4f) << "turn " << k << " is not about the cone's axis";
+    for (std::size_t i = 0; i < cone.size (); i += 97)
+    {
+      const Eigen::Vector3f q = (t * cone[i].getVector4fMap ()).head<3> ();
+      EXPECT_NEAR (q.y (), cone[i].y, 1e-5f) << "turn " << k << " slides along the axis";
+      EXPECT_NEAR (std::hypot (q.x (), q.z ()), radius (cone[i].y), 1e-5) << "turn " << k << " leaves the cone";
+    }
+  }
+  // A least constrained motion that does not turn (a plane's slide) has no screw to follow.
+  pcl::registration::PoseConditioning slide = c;
+  slide.eigenvectors.col (0) << 0.0, 0.0, 0.0, 1.0, 0.0, 0.0;
+  EXPECT_TRUE (pcl::registration::screwTurnPoses (slide, Eigen::Matrix4f::Identity (), turns).empty ());
+}

@@ -683,6 +683,8 @@ TEST (TensorViewCacheKey, EveryPreparationFieldAndTheSensorChangeTheHash)
       {"normal_radius_resolutions", [] (P& p, pcl::ScanViewpoint&) { p.normal_radius_resolutions *= 2; }},
       {"stray_fragment_gap", [] (P& p, pcl::ScanViewpoint&) { p.stray_fragment_gap += 1; }},
       {"stray_fragment_fraction", [] (P& p, pcl::ScanViewpoint&) { p.stray_fragment_fraction = 0; }},
+      {"speck_max_pixels", [] (P& p, pcl::ScanViewpoint&) { p.speck_max_pixels += 1; }},
+      {"speck_jump", [] (P& p, pcl::ScanViewpoint&) { p.speck_jump *= 2; }},
       {"reduction_grid_step", [] (P& p, pcl::ScanViewpoint&) { p.reduction_grid_step = 2; }},
       {"sensor model", [] (P&, pcl::ScanViewpoint& v) { v.model = pcl::ScanViewpoint::Model::orthographic; }},
       {"sensor position", [] (P&, pcl::ScanViewpoint& v) { v.sensor_pose.translation ().x () += 1e-9; }},

@@ -64,13 +64,15 @@ namespace pcl_tensor_python
       using P = pcl::ScanPreparationParams;
       bindStruct<P> (m, "PreparationParams", "Range image -> M_i -> M'_i (Section 2); C++ pcl::ScanPreparationParams.",
                      {"edge_std_devs", "target_faces", "normal_method", "normal_radius_resolutions", "stray_fragment_gap",
-                      "stray_fragment_fraction", "reduction_grid_step"})
+                      "stray_fragment_fraction", "speck_max_pixels", "speck_jump", "reduction_grid_step"})
         .def_readwrite ("edge_std_devs", &P::edge_std_devs)
         .def_readwrite ("target_faces", &P::target_faces)
         .def_readwrite ("normal_method", &P::normal_method)
         .def_readwrite ("normal_radius_resolutions", &P::normal_radius_resolutions)
         .def_readwrite ("stray_fragment_gap", &P::stray_fragment_gap)
         .def_readwrite ("stray_fragment_fraction", &P::stray_fragment_fraction)
+        .def_readwrite ("speck_max_pixels", &P::speck_max_pixels)
+        .def_readwrite ("speck_jump", &P::speck_jump)
         .def_readwrite ("reduction_grid_step", &P::reduction_grid_step);
 
       using V = pcl::registration::TensorVerificationParams;

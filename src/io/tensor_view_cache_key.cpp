@@ -41,7 +41,7 @@ namespace pcl
     }
 
     // A new field of ScanPreparationParams changes its size on this ABI: hash it below, then update this.
-    static_assert (sizeof (ScanPreparationParams) == 48, "hash every field of ScanPreparationParams in hashPreparation");
+    static_assert (sizeof (ScanPreparationParams) == 64, "hash every field of ScanPreparationParams in hashPreparation");
 
     std::uint64_t
     hashPreparation (const ScanPreparationParams& params, const ScanViewpoint& viewpoint)
@@ -49,7 +49,7 @@ namespace pcl
       ContentHash hash = taggedHash ("preparation");
       hash.add (params.edge_std_devs).add (params.target_faces).add (params.normal_method)
           .add (params.normal_radius_resolutions).add (params.stray_fragment_gap).add (params.stray_fragment_fraction)
-          .add (params.reduction_grid_step);
+          .add (params.speck_max_pixels).add (params.speck_jump).add (params.reduction_grid_step);
       hash.add (viewpoint.model);
       const Eigen::Matrix4d& pose = viewpoint.sensor_pose.matrix ();
       for (Eigen::Index i = 0; i < pose.size (); ++i)
@@ -70,8 +70,9 @@ namespace pcl
     namespace
     {
       /** Cached pair results of an older verification are stale even under the same parameters: raise
-        * this when verification changes its verdicts (2: the free-space check's occlusion and noise rules). */
-      constexpr int kVerificationRevision = 2;
+        * this when verification changes its verdicts (2: the free-space check's occlusion and noise rules;
+        * 3: rival turns along the screw of the least constrained motion). */
+      constexpr int kVerificationRevision = 3;
     }
 
     TensorViewCacheKey
@@ -80,7 +81,7 @@ namespace pcl
     {
       static_assert (sizeof (pcl::registration::TensorVerificationParams) == 112,
                      "a field was added to TensorVerificationParams: add it to pairCacheKey () too");
-      static_assert (sizeof (pcl::registration::TensorRegistrationParams) == 272,
+      static_assert (sizeof (pcl::registration::TensorRegistrationParams) == 288,
                      "a field was added to TensorRegistrationParams: add it to pairCacheKey () too");
       TensorViewCacheKey key;
       key.source = taggedHash ("pair").add (model.source).add (model.preparation).add (scene.source).add (scene.preparation).digest ();

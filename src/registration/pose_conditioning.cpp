@@ -126,5 +126,25 @@ namespace pcl
         poses.push_back (motionAbout (c, M_PI * conditioning.axes.col (a), Eigen::Vector3d::Zero ()) * pose);
       return poses;
     }
+
+    std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>>
+    screwTurnPoses (const PoseConditioning& conditioning, const Eigen::Matrix4f& pose, const std::vector<double>& turns)
+    {
+      std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> poses;
+      const Eigen::Matrix<double, 6, 1> screw = conditioning.eigenvectors.col (0);
+      const double turn_rate = screw.head<3> ().norm ();
+      if (conditioning.pairs < 6 || !(conditioning.radius > 0.0) || turn_rate < 0.25)
+        return poses;
+      for (const double angle : turns)
+        for (const double sign : {1.0, -1.0})
+        {
+          if (sign < 0.0 && std::abs (angle - M_PI) < 1e-9)
+            continue;
+          // The motion scaled to turn by exactly the angle: the SE(3) exponential follows its screw.
+          const double s = sign * angle / turn_rate;
+          poses.push_back (motionAbout (conditioning.centroid, s * screw.head<3> (), s * conditioning.radius * screw.tail<3> ()) * pose);
+        }
+      return poses;
+    }
   }
 }

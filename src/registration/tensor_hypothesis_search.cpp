@@ -43,6 +43,13 @@ namespace pcl
         constexpr double kRivalRotation = 5.0;
         constexpr double kRivalTranslation = 10.0;
 
+        /** The probes: steps of 0.35 and 0.8 along the two least constrained motions (rivalPoses()), and
+          * turns of 90, 135 and 180 degrees along the least constrained one's screw (screwTurnPoses()).
+          * The steps turn a pose by 46 degrees at most, yet a teapot's body also fits a quarter turn
+          * away (doc/design.md#rival-probe). */
+        const std::vector<double> kRivalSteps{0.35, 0.8};
+        const std::vector<double> kRivalTurns{0.5 * M_PI, 0.75 * M_PI, M_PI};
+
         /** A rival needs less evidence than an answer: one that fails only the free-space check, by at
           * most this many times free_space_fraction, still makes the pair ambiguous. The stricter the
           * check, the fewer rivals pass it; doubting on weaker evidence keeps a strict check from turning
@@ -273,19 +280,23 @@ namespace pcl
               // A rival is another answer, not the same pose where ICP stopped (kRivalRotation, kRivalTranslation).
               const double rival_distance = kRivalTranslation * report_.resolution;
               std::vector<TensorVerificationResult> passed{best}, rivals;
-              for (const Eigen::Matrix4f& probe : rivalPoses (conditioning, best.transform, 2, {0.35, 0.8}))
-              {
+              const auto probe = [&] (const Eigen::Matrix4f& pose, bool outright) {
                 ++report_.ambiguity_checks;
                 // Most probes of a pose the views pin down return to it under ICP: no rival, no checks.
-                const Eigen::Matrix4f refined = verification_.refine (probe);
+                const Eigen::Matrix4f refined = verification_.refine (pose);
                 if (posesAgree (refined, best.transform, scene_centroid_, params_.repeat_rotation, distance))
-                  continue;
+                  return;
                 TensorVerificationResult result;
                 verification_.verify (refined, result, false);
-                if (!rivalPasses (result))
-                  continue;
-                (result.passed () ? passed : rivals).push_back (result);
-              }
+                if (rivalPasses (result) && (result.passed () || !outright))
+                  (result.passed () ? passed : rivals).push_back (result);
+              };
+              for (const Eigen::Matrix4f& pose : rivalPoses (conditioning, best.transform, 2, kRivalSteps))
+                probe (pose, false);
+              // A far turn of a near-symmetric object (an ellipsoid) meets poses that almost fit: from
+              // there, only a pose that passes outright doubts the answer.
+              for (const Eigen::Matrix4f& pose : screwTurnPoses (conditioning, best.transform, kRivalTurns))
+                probe (pose, true);
               // Only a pose that passed outright may replace the answer; any may doubt it.
               const auto strongest = std::max_element (passed.begin (), passed.end (), [] (const auto& a, const auto& b) {
                 return a.fine_correspondences < b.fine_correspondences;

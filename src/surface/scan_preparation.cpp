@@ -5,6 +5,7 @@
 #include <pcl/common/scan_noise.h>
 #include <pcl/surface/quadric_mesh_reduction.h>
 #include <pcl/surface/range_scan_triangulation.h>
+#include <pcl/surface/speck_removal.h>
 #include <pcl/surface/stray_fragment_removal.h>
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/common/point_tests.h>
@@ -31,6 +32,9 @@ namespace pcl
             || !(params.stray_fragment_fraction >= 0.0 && params.stray_fragment_fraction < 1.0))
           PCL_TENSOR_THROW (BadArgumentException, "stray fragments: the gap must be positive and finite and the fraction in [0, 1), got "
                             << params.stray_fragment_gap << " and " << params.stray_fragment_fraction);
+        if (params.speck_max_pixels < 0 || !(params.speck_jump > 0.0) || !std::isfinite (params.speck_jump))
+          PCL_TENSOR_THROW (BadArgumentException, "specks: the size must be non-negative and the jump positive and finite, got "
+                            << params.speck_max_pixels << " and " << params.speck_jump);
       }
       RangeScanTriangulation triangulation;
       QuadricMeshReduction reduction;
@@ -72,11 +76,27 @@ namespace pcl
     }
   }
 
+  namespace
+  {
+    /** \a cloud, or its copy in \a storage without its specks when it is organized and has any. */
+    const pcl::PointCloud<pcl::PointXYZ>&
+    withoutSpecks (const pcl::PointCloud<pcl::PointXYZ>& cloud, const ScanViewpoint& viewpoint,
+                   const ScanPreparationParams& params, pcl::PointCloud<pcl::PointXYZ>& storage)
+    {
+      if (params.speck_max_pixels == 0 || !cloud.isOrganized ())
+        return cloud;
+      storage = cloud;
+      return removeSpecks (storage, viewpoint, params.speck_max_pixels, params.speck_jump) > 0 ? storage : cloud;
+    }
+  }
+
   PreparedScan
-  prepareScan (const pcl::PointCloud<pcl::PointXYZ>& cloud, const ScanViewpoint& viewpoint,
+  prepareScan (const pcl::PointCloud<pcl::PointXYZ>& input, const ScanViewpoint& viewpoint,
                const ScanPreparationParams& params)
   {
     const PreparationStages stages (viewpoint, params);
+    pcl::PointCloud<pcl::PointXYZ> storage;
+    const pcl::PointCloud<pcl::PointXYZ>& cloud = withoutSpecks (input, viewpoint, params, storage);
     PreparedScan scan;
     stages.triangulation.triangulate (cloud, scan.fine);
     // d_res of the whole mesh sets the gap; the fragments hold too few points to change it.

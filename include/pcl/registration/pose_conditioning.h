@@ -43,14 +43,25 @@ namespace pcl
     /** \brief Poses a rival registration could take near \a pose, for checking that \a pose is the
       * only one the views verify: \a pose moved along each of the \a directions least constrained
       * motions of \a conditioning by each of \a steps (and their negatives; a step of s turns the
-      * common part by s radians, or moves it by s times its radius), and turned half-way about each of
-      * its principal axes (a twofold symmetry). Each is applied about the common part's centroid, in
-      * the target's frame. None when \a conditioning has too few pairs.
+      * common part by s |omega| radians and moves it by s |v| times its radius, for the motion's unit
+      * (omega, v)), and turned half-way about each of its principal axes (a twofold symmetry). Each is
+      * applied about the common part's centroid, in the target's frame. None when \a conditioning has
+      * too few pairs.
       * \ingroup registration
       */
     std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>>
     rivalPoses (const PoseConditioning& conditioning, const Eigen::Matrix4f& pose, int directions,
                 const std::vector<double>& steps);
+
+    /** \brief \a pose turned along the screw of the least constrained motion of \a conditioning by
+      * each of \a turns (radians) and its negative (a half turn once): the turns a surface of
+      * revolution allows, however far, which steps along a motion that also translates do not reach.
+      * None when that motion hardly turns (|omega| < 0.25: its screw axis would lie over 4 radii
+      * away) or \a conditioning has too few pairs.
+      * \ingroup registration
+      */
+    std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>>
+    screwTurnPoses (const PoseConditioning& conditioning, const Eigen::Matrix4f& pose, const std::vector<double>& turns);
 
     /** \brief The conditioning of the pose \a t of \a source on \a target: each source point moved by
       * \a t and paired with its nearest target point within \a max_distance contributes the row

@@ -11,7 +11,7 @@
 namespace pcl
 {
   /** \brief Parameters of the range image -> M_i -> M'_i pipeline of Section 2, with the paper's defaults
-    * (the stray-fragment fields are beyond the paper); registration's own are registrationPreparation(). */
+    * (the stray-fragment and speck fields are beyond the paper); registration's own are registrationPreparation(). */
   struct ScanPreparationParams
   {
     /** Prune triangles with an edge longer than mean + k * stddev (Section 2: k = 0.6). */
@@ -31,6 +31,13 @@ namespace pcl
       * speck can set on its own.
       * \note Beyond the paper, which removes nothing; see doc/design.md#stray-fragment-removal. */
     double stray_fragment_fraction = 0.01;
+    /** Beyond the paper: groups of at most this many pixels of an organized range image that stand in
+      * front of the surface on every side are removed before triangulation (speckPixels(); 0 keeps
+      * them). Like stray fragments, one speck can set Eq. 9's extents on its own.
+      * \note Beyond the paper; see doc/design.md#speck-removal. */
+    int speck_max_pixels = 9;
+    /** ... and stand at least this many grid spacings in front of every neighbour. */
+    double speck_jump = 3.0;
     /** Beyond the paper: Garland-Heckbert reduces the mesh of every this-many-th row and column of
       * an organized range image instead of M_i itself, when that mesh still has at least 4 points
       * per target face (1: M_i). The reduction's cost grows with its input, and M'_i keeps only a
@@ -50,7 +57,7 @@ namespace pcl
     double noise = 0.0;
   };
 
-  /** \brief Run triangulation, stray-fragment removal, reduction and normal estimation on one range image.
+  /** \brief Run speck removal, triangulation, stray-fragment removal, reduction and normal estimation on one range image.
     * \throw InvalidScanException on unusable data, pcl::BadArgumentException on bad parameters
     */
   PreparedScan
