@@ -10,6 +10,7 @@
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/common/point_tests.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace pcl
@@ -32,9 +33,7 @@ namespace pcl
             || !(params.stray_fragment_fraction >= 0.0 && params.stray_fragment_fraction < 1.0))
           PCL_TENSOR_THROW (BadArgumentException, "stray fragments: the gap must be positive and finite and the fraction in [0, 1), got "
                             << params.stray_fragment_gap << " and " << params.stray_fragment_fraction);
-        if (params.speck_max_pixels < 0 || !(params.speck_jump > 0.0) || !std::isfinite (params.speck_jump))
-          PCL_TENSOR_THROW (BadArgumentException, "specks: the size must be non-negative and the jump positive and finite, got "
-                            << params.speck_max_pixels << " and " << params.speck_jump);
+        checkSpeckParameters (params.speck_max_pixels, params.speck_jump);
       }
       RangeScanTriangulation triangulation;
       QuadricMeshReduction reduction;
@@ -78,15 +77,18 @@ namespace pcl
 
   namespace
   {
-    /** \a cloud, or its copy in \a storage without its specks when it is organized and has any. */
+    /** \a cloud, or its copy in \a storage without its specks when it has any: most scans have none,
+      * and are not copied. */
     const pcl::PointCloud<pcl::PointXYZ>&
     withoutSpecks (const pcl::PointCloud<pcl::PointXYZ>& cloud, const ScanViewpoint& viewpoint,
                    const ScanPreparationParams& params, pcl::PointCloud<pcl::PointXYZ>& storage)
     {
-      if (params.speck_max_pixels == 0 || !cloud.isOrganized ())
+      const std::vector<bool> speck = speckPixels (cloud, viewpoint, params.speck_max_pixels, params.speck_jump);
+      if (std::find (speck.begin (), speck.end (), true) == speck.end ())
         return cloud;
       storage = cloud;
-      return removeSpecks (storage, viewpoint, params.speck_max_pixels, params.speck_jump) > 0 ? storage : cloud;
+      removeSpecks (storage, speck);
+      return storage;
     }
   }
 

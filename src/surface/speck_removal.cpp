@@ -93,12 +93,18 @@ namespace pcl
     }
   }
 
-  std::vector<bool>
-  speckPixels (const pcl::PointCloud<pcl::PointXYZ>& cloud, const ScanViewpoint& viewpoint, int max_pixels, double jump)
+  void
+  checkSpeckParameters (int max_pixels, double jump)
   {
     if (max_pixels < 0 || !(jump > 0.0) || !std::isfinite (jump))
       PCL_TENSOR_THROW (BadArgumentException, "specks: the size must be non-negative and the jump positive and finite, got "
                         << max_pixels << " and " << jump);
+  }
+
+  std::vector<bool>
+  speckPixels (const pcl::PointCloud<pcl::PointXYZ>& cloud, const ScanViewpoint& viewpoint, int max_pixels, double jump)
+  {
+    checkSpeckParameters (max_pixels, jump);
     std::vector<bool> speck (cloud.size (), false);
     if (max_pixels == 0 || !cloud.isOrganized ())
       return speck;
@@ -135,7 +141,12 @@ namespace pcl
   std::size_t
   removeSpecks (pcl::PointCloud<pcl::PointXYZ>& cloud, const ScanViewpoint& viewpoint, int max_pixels, double jump)
   {
-    const std::vector<bool> speck = speckPixels (cloud, viewpoint, max_pixels, jump);
+    return removeSpecks (cloud, speckPixels (cloud, viewpoint, max_pixels, jump));
+  }
+
+  std::size_t
+  removeSpecks (pcl::PointCloud<pcl::PointXYZ>& cloud, const std::vector<bool>& speck)
+  {
     const float nan = std::numeric_limits<float>::quiet_NaN ();
     std::size_t removed = 0;
     for (std::size_t i = 0; i < speck.size (); ++i)

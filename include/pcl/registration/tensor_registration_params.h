@@ -94,7 +94,8 @@ namespace pcl
       double ambiguity_rotation = 60.0;
       /** Once a pose passes, the poses a rival could take near it are probed too (rivalPoses(): moved
         * along the two motions its common part constrains least, turned along the least constrained
-        * one's screw by up to a half turn (screwTurnPoses()), and turned half-way about that part's principal axes), each refined by ICP and verified. Of the poses that pass, the one with the
+        * one's screw by up to a half turn (screwTurnPoses()), and turned half-way about that part's
+        * principal axes), each refined by ICP and verified. Of the poses that pass, the one with the
         * most fine correspondences is kept; another distinct one with enough of them (rival_margin)
         * means the surfaces do not pin the pose down (a surface of revolution, a plane, a cylinder, a
         * twofold symmetry), and the pair is reported ambiguous. false: no probe.

@@ -40,4 +40,17 @@ namespace pcl
     */
   std::size_t
   removeSpecks (pcl::PointCloud<pcl::PointXYZ>& cloud, const ScanViewpoint& viewpoint, int max_pixels, double jump);
+
+  /** \brief Set the pixels flagged in \a speck (one flag per point, as speckPixels() returns them) to
+    * NaN, and mark \a cloud not dense when any was set.
+    * \return the number of pixels emptied
+    */
+  std::size_t
+  removeSpecks (pcl::PointCloud<pcl::PointXYZ>& cloud, const std::vector<bool>& speck);
+
+  /** \brief Check speckPixels()'s parameters without an image.
+    * \throw pcl::BadArgumentException on a negative \a max_pixels or a non-positive or infinite \a jump
+    */
+  void
+  checkSpeckParameters (int max_pixels, double jump);
 }
