@@ -61,9 +61,10 @@ namespace pcl_tensor_tools
   inline bool
   parseSortedObjectDimensions (int argc, char** argv, pcl::ObjectDimensions& dims)
   {
-    if (!parseObjectDimensions (argc, argv, dims.D))
+    Eigen::Vector3d given;
+    if (!parseObjectDimensions (argc, argv, given))
       return false;
-    std::sort (dims.D.data (), dims.D.data () + 3, std::greater<> ());
+    dims = pcl::givenObjectDimensions (given);
     return true;
   }
 
@@ -109,9 +110,9 @@ namespace pcl_tensor_tools
   inline pcl::ObjectDimensions
   dimensionsOfViews (const std::vector<CachedViewFile>& views)
   {
-    pcl::ObjectDimensions dims;
+    std::vector<Eigen::Vector3d> extents;
     for (const auto& view : views)
-      dims.D = dims.D.cwiseMax (view.extents);
-    return dims;
+      extents.push_back (view.extents);
+    return pcl::objectDimensionsFromExtents (extents);
   }
 }

@@ -314,6 +314,7 @@ namespace
       m.conf = partPath (o.conf, c);
       pcl::ScanVolumetricIntegration integration;
       integration.setParams (o.integration);
+      integration.setNumberOfThreads (o.threads);
       const auto views = pcl::registration::registeredIntegrationViews (result, c);
       m.views = views.size ();
       integration.setInputViews (views);

@@ -96,10 +96,8 @@ namespace
   pcl::ObjectDimensions
   objectDimensions (const PairsOptions& o, const std::vector<pcl_tensor_tools::CachedViewFile>& files)
   {
-    pcl::ObjectDimensions dims;
-    dims.D = o.params.object_dimensions;
-    std::sort (dims.D.data (), dims.D.data () + 3, std::greater<> ());
-    return (dims.D.array () > 0.0).all () ? dims : pcl_tensor_tools::dimensionsOfViews (files);
+    const pcl::ObjectDimensions given = pcl::givenObjectDimensions (o.params.object_dimensions);
+    return given.isSet () ? given : pcl_tensor_tools::dimensionsOfViews (files);
   }
 
   /** A view's meshes and its tensors for \a dims, both from the cache. */

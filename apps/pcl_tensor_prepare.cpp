@@ -7,6 +7,7 @@
 #include <pcl/common/time.h>
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
+#include <pcl/io/cached_tensor_view.h>
 #include <pcl/io/registration_report_json.h>
 #include <pcl/io/tensor_view_cache.h>
 #include <pcl/registration/tensor_view.h>
@@ -18,8 +19,6 @@ using namespace pcl::console;
 
 namespace
 {
-  using pcl::io::CacheEntryState;
-
   void
   printHelp (const char* name)
   {
@@ -64,8 +63,8 @@ namespace
     bool selected = true;
     /** The view when it was prepared in this run, kept for its tensors (null otherwise). */
     pcl::registration::TensorView::ConstPtr prepared;
-    CacheEntryState meshes_found = CacheEntryState::MISSING, tensors_found = CacheEntryState::MISSING;
-    bool meshes_computed = false, tensors_computed = false;
+    /** What its entries were found as, and which were computed. */
+    pcl::io::CachedViewReport entries;
     double ms = 0.0;
   };
 
@@ -104,25 +103,18 @@ namespace
     const pcl::StopWatch watch;
     const pcl::io::RangeScan scan = pcl_tensor_tools::loadScan (job.file, argc, argv);
     job.key = pcl::io::viewCacheKey (job.file, o.params.preparation, scan.viewpoint);
-    job.meshes_found = cache.loadExtents (job.id, job.key, job.extents);
-    if (job.meshes_found != CacheEntryState::VALID)
+    try
     {
-      pcl::registration::TensorView::Ptr view;
-      try
-      {
-        view = pcl::registration::prepareTensorView (*scan.cloud, scan.viewpoint, o.params.preparation);
-      }
-      catch (const pcl::InvalidScanException& e)
-      {
-        // Which of the views cannot be meshed, in the one line the user gets.
-        PCL_TENSOR_THROW (pcl::InvalidScanException, "'" << job.file << "': " << pcl::errorDescription (e));
-      }
-      cache.saveView (job.id, job.key, *view);
-      job.extents = pcl::principalExtents (*view->scan->fine.cloud);  // what saveView stored
-      job.meshes_computed = true;
-      if (o.tensors)
-        job.prepared = view;
+      job.prepared = pcl::io::cachedExtents (cache, job.id, job.key, *scan.cloud, scan.viewpoint, o.params.preparation,
+                                             job.extents, job.entries);
     }
+    catch (const pcl::InvalidScanException& e)
+    {
+      // Which of the views cannot be meshed, in the one line the user gets.
+      PCL_TENSOR_THROW (pcl::InvalidScanException, "'" << job.file << "': " << pcl::errorDescription (e));
+    }
+    if (!o.tensors)
+      job.prepared.reset ();
     job.ms += watch.getTime ();
   }
 
@@ -164,27 +156,14 @@ namespace
         cache, job.file, o.params.preparation, argc, argv, "run pcl_tensor_prepare on every view first (--only needs their extents)");
   }
 
-  /** The view's tensors entry kept when valid for \a dims, else computed and written. */
+  /** The view's tensors entry kept when valid for \a dims, else computed (from the meshes prepared in
+    * this run, or else from the cache) and written. */
   void
   prepareTensors (const pcl::io::TensorViewCache& cache, const PrepareOptions& o, const pcl::ObjectDimensions& dims,
                   ViewJob& job)
   {
     const pcl::StopWatch watch;
-    const std::uint64_t tensor_hash = pcl::io::hashTensorParameters (o.params);
-    pcl::PointCloud<pcl::TensorDescriptor>::Ptr tensors;
-    job.tensors_found = cache.loadTensors (job.id, job.key, dims, tensor_hash, tensors);
-    if (job.tensors_found != CacheEntryState::VALID)
-    {
-      pcl::registration::TensorView view;
-      if (job.prepared)
-        view = *job.prepared;
-      else if (const auto state = cache.loadView (job.id, job.key, view); state != CacheEntryState::VALID)
-        PCL_TENSOR_THROW (pcl::IOException, "the meshes of '" << job.file << "' turned " << pcl::io::toString (state)
-                          << " in the cache during the run (another writer?); run again");
-      tensors = pcl::registration::computeViewTensors (*view.scan, dims, o.params);
-      cache.saveTensors (job.id, job.key, dims, tensor_hash, *tensors);
-      job.tensors_computed = true;
-    }
+    pcl::io::cachedTensors (cache, job.id, job.key, dims, o.params, job.prepared.get (), job.entries);
     job.prepared.reset ();
     job.ms += watch.getTime ();
   }
@@ -204,12 +183,12 @@ namespace
       pcl::io::JsonReport j;
       j["file"] = job.file;
       j["id"] = job.id;
-      j["meshes"] = pcl::io::toString (job.meshes_found);
-      j["meshes_action"] = action (job.meshes_computed);
+      j["meshes"] = pcl::io::toString (job.entries.meshes_found);
+      j["meshes_action"] = action (job.entries.meshes_computed);
       if (tensors)
       {
-        j["tensors"] = pcl::io::toString (job.tensors_found);
-        j["tensors_action"] = action (job.tensors_computed);
+        j["tensors"] = pcl::io::toString (job.entries.tensors_found);
+        j["tensors_action"] = action (job.entries.tensors_computed);
       }
       j["time_ms"] = job.ms;
       report.push_back (std::move (j));
@@ -223,9 +202,9 @@ namespace
     for (const auto& job : jobs)
     {
       print_value ("%s", job.file.c_str ());
-      print_info (": meshes %s, %s", pcl::io::toString (job.meshes_found), action (job.meshes_computed));
+      print_info (": meshes %s, %s", pcl::io::toString (job.entries.meshes_found), action (job.entries.meshes_computed));
       if (tensors)
-        print_info ("; tensors %s, %s", pcl::io::toString (job.tensors_found), action (job.tensors_computed));
+        print_info ("; tensors %s, %s", pcl::io::toString (job.entries.tensors_found), action (job.entries.tensors_computed));
       print_info ("; "); print_value ("%.0f", job.ms); print_info (" ms\n");
     }
     if (tensors)

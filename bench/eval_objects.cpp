@@ -7,11 +7,14 @@
  * from the pair alone) and scored against the ground truth; the ground-truth pose is also handed to
  * local verification (true-pose recall: which check refuses it), and the pose's conditioning
  * (pcl::registration::computePoseConditioning) is measured at the truth and at the reported pose.
- * One CSV row per pair (objects_pairs.csv) and one summary line per object (objects.csv).
+ * With --fpfh, PCL's FPFH + SampleConsensusPrerejective + the same ICP registers the same pairs, side by
+ * side (bench/eval/fpfh_baseline.h). One CSV row per pair (objects_pairs.csv) and one summary line per
+ * object (objects.csv).
  */
 #include "eval/eval_main.h"
 #include "eval/eval_views.h"
 #include "eval/pair_evaluation.h"
+#include "eval/pair_runs.h"
 
 #include <pcl/common/time.h>
 #include <pcl/console/parse.h>
@@ -42,6 +45,11 @@ namespace
     std::vector<std::string> objects;  ///< empty: every object
     bool real = false, meshes = false, truth = false;
     bool pushbroom = false, scanner = false;
+    /** The 26 directions of the paper's synthetic set (pcl::makeDefaultViewDirections) instead of a ring. */
+    bool all_around = false;
+    /** Also PCL's FPFH + SampleConsensusPrerejective on every pair. */
+    bool fpfh = false;
+    FpfhBaselineParams baseline;
     int specks = -1;  ///< with --scanner: specks per view instead of the preset's (-1: the preset's)
     int ring = 12;
     double step = 30.0, noise = 0.3;
@@ -63,6 +71,7 @@ namespace
     std::array<double, 3> truth_violation{}, reported_violation{};
     pcl::registration::TensorVerificationResult truth;  ///< the ground truth, verified with D from the pair
     double truth_conditioning = -1.0;
+    PairResult fpfh;  ///< PCL's FPFH baseline on the pair (with --fpfh)
   };
 
   void
@@ -78,6 +87,7 @@ namespace
                  "  --truth            also verify every pair's ground-truth pose (true-pose recall) and measure the\n"
                  "                     conditioning at the truth\n"
                  "  --ring N           rendered views per ring (default %d)\n"
+                 "  --all-around       the 26 directions of the paper's synthetic set instead of a ring\n"
                  "  --step DEG         azimuth step of the ring (default %g)\n"
                  "  --noise S          noise along the rays, sigma in d_res (default %g)\n"
                  "  --pushbroom        render with a pushbroom (line-scan) camera instead of a perspective one\n"
@@ -94,6 +104,8 @@ namespace
                  "  --rival-margin M   a rival with (1 - M) times the kept pose's fine correspondences is ambiguous (default %g)\n"
                  "  --tr T, --tc T     tensor matching thresholds t_r and t_c, Eq. 5 and 6 (default %g, %g)\n"
                  "  --order O          order of hypotheses: best or scene (default %s)\n"
+                 "  --fpfh             also PCL's FPFH + SampleConsensusPrerejective + the same ICP on every pair (one\n"
+                 "                     thread: PCL draws with std::rand)\n"
                  "  --out DIR          CSVs: objects_pairs.csv, objects.csv (default %s)\n"
                  "  --data DIR         third-party data (default %s)\n",
                  name, d.ring, d.step, d.noise, d.threads, d.max_pairs,
@@ -120,7 +132,7 @@ namespace
       params.artifacts = pcl::scannerLikeArtifacts ();
     if (o.scanner && o.specks >= 0)
       params.artifacts.specks = o.specks;
-    return makeSyntheticViews (mesh, params, pcl::makeRingViewDirections (o.ring, o.step));
+    return makeSyntheticViews (mesh, params, o.all_around ? pcl::makeDefaultViewDirections () : pcl::makeRingViewDirections (o.ring, o.step));
   }
 
   /** Every set the options name, as (name, loader): loading waits until the set's turn. */
@@ -202,12 +214,20 @@ namespace
     return pair;
   }
 
-  std::vector<ObjectPair>
-  evaluateObject (const std::string& object, const EvalViews& views, const Options& o)
+  /** Every pair of a set's views, or its first --max-pairs. */
+  std::vector<std::pair<int, int>>
+  objectPairs (const EvalViews& views, const Options& o)
   {
     auto pairs = allPairs (static_cast<int> (views.size ()));
     if (o.max_pairs > 0 && pairs.size () > static_cast<std::size_t> (o.max_pairs))
       pairs.resize (o.max_pairs);
+    return pairs;
+  }
+
+  std::vector<ObjectPair>
+  evaluateObject (const std::string& object, const EvalViews& views, const Options& o)
+  {
+    const auto pairs = objectPairs (views, o);
     std::vector<ObjectPair> rows (pairs.size ());
     std::atomic<std::size_t> next{0};
     std::mutex print;
@@ -231,6 +251,13 @@ namespace
     work ();
     for (auto& t : pool)
       t.join ();
+    if (o.fpfh)
+    {
+      // On this thread alone: SampleConsensusPrerejective draws from std::rand, seeded per pair.
+      const auto fpfh = runFpfhPairs (views, computeFpfhViews (views, o.baseline), pairs, o.baseline, o.params.verification);
+      for (std::size_t k = 0; k < rows.size (); ++k)
+        rows[k].fpfh = fpfh[k];
+    }
     return rows;
   }
 
@@ -253,10 +280,11 @@ namespace
   /** One summary line: correct/total and true-pose recall per band, wrong and ambiguous counts, the
     * checks that refused true poses, the conditioning ranges, the median time. */
   std::string
-  summarize (const std::string& object, const std::vector<ObjectPair>& rows, bool truth)
+  summarize (const std::string& object, const std::vector<ObjectPair>& rows, bool truth, bool fpfh)
   {
-    std::array<int, 4> total{}, correct{}, truth_passed{};
-    int wrong = 0, ambiguous = 0;
+    std::array<int, 4> total{}, correct{}, truth_passed{}, fpfh_correct{};
+    int wrong = 0, ambiguous = 0, fpfh_wrong = 0;
+    std::vector<double> fpfh_times;
     std::array<int, pcl::registration::kTensorVerificationStages> truth_refused{};
     double min_correct_cond = 1.0, max_wrong_cond = 0.0, min_truth_cond = 1.0;
     std::vector<double> times;
@@ -268,6 +296,9 @@ namespace
       wrong += p.result.wrong ();
       ambiguous += p.ambiguous;
       times.push_back (p.result.time_ms);
+      fpfh_correct[b] += p.fpfh.correct;
+      fpfh_wrong += p.fpfh.wrong ();
+      fpfh_times.push_back (p.fpfh.time_ms);
       if (p.result.correct)
         min_correct_cond = std::min (min_correct_cond, p.reported_conditioning);
       if (p.result.wrong ())
@@ -289,6 +320,9 @@ namespace
     for (std::size_t k = 1; k < truth_refused.size (); ++k)
       s << ',' << truth_refused[k];
     s << ',' << min_correct_cond << ',' << max_wrong_cond << ',' << (truth ? min_truth_cond : -1.0);
+    for (int b = 0; b < 4; ++b)
+      s << ',' << (fpfh ? std::to_string (fpfh_correct[b]) + "/" + std::to_string (total[b]) : "-");
+    s << ',' << (fpfh ? std::to_string (fpfh_wrong) : "-") << ',' << (fpfh ? median (fpfh_times) / 1000.0 : -1.0);
     return s.str ();
   }
 
@@ -299,7 +333,8 @@ namespace
                     "truth_ge0.5,truth_0.3-0.5,truth_0.1-0.3";
     for (std::size_t k = 1; k < pcl::registration::kTensorVerificationStages; ++k)
       h += ",truth_refused_" + toString (static_cast<pcl::registration::TensorVerificationStage> (k));
-    return h + ",min_conditioning_correct,max_conditioning_wrong,min_conditioning_truth";
+    return h + ",min_conditioning_correct,max_conditioning_wrong,min_conditioning_truth,"
+               "fpfh_ge0.5,fpfh_0.3-0.5,fpfh_0.1-0.3,fpfh_lt0.1,fpfh_wrong,fpfh_median_s";
   }
 
   void
@@ -318,7 +353,8 @@ namespace
         out << ',' << c.model_seen << ',' << c.scene_seen << ',' << c.model_matched << ',' << c.scene_matched;
       for (const auto& v : {p.truth_violation, p.reported_violation})
         out << ',' << v[0] << ',' << v[1] << ',' << v[2];
-      out << '\n';
+      out << ',' << p.fpfh.registered << ',' << p.fpfh.correct << ',' << p.fpfh.rotation_error_deg << ','
+          << p.fpfh.translation_error_res << ',' << p.fpfh.time_ms << '\n';
     }
     out.flush ();
   }
@@ -351,6 +387,8 @@ namespace
     pcl::console::parse_argument (argc, argv, "--noise", o.noise);
     o.pushbroom = pcl::console::find_switch (argc, argv, "--pushbroom");
     o.scanner = pcl::console::find_switch (argc, argv, "--scanner");
+    o.all_around = pcl::console::find_switch (argc, argv, "--all-around");
+    o.fpfh = pcl::console::find_switch (argc, argv, "--fpfh");
     pcl::console::parse_argument (argc, argv, "--specks", o.specks);
     pcl::console::parse_argument (argc, argv, "--threads", o.threads);
     pcl::console::parse_argument (argc, argv, "--max-pairs", o.max_pairs);
@@ -384,7 +422,8 @@ main (int argc, char** argv)
                  "fine_correspondences,required_correspondences,fine_dimension_excess,free_space,"
                  "truth_model_seen,truth_scene_seen,truth_model_matched,truth_scene_matched,"
                  "model_seen,scene_seen,model_matched,scene_matched,"
-                 "truth_free_space_2,truth_free_space_4,truth_free_space_8,free_space_2,free_space_4,free_space_8\n";
+                 "truth_free_space_2,truth_free_space_4,truth_free_space_8,free_space_2,free_space_4,free_space_8,"
+                 "fpfh_registered,fpfh_correct,fpfh_rotation_error_deg,fpfh_translation_error_res,fpfh_time_ms\n";
     summary_csv << summaryHeader () << '\n';
     std::printf ("%s\n", summaryHeader ().c_str ());
     for (const auto& [name, load] : objectSets (o))
@@ -393,7 +432,7 @@ main (int argc, char** argv)
       prepareViews (views, o.params);
       const auto rows = evaluateObject (name, views, o);
       writePairs (pairs_csv, rows);
-      const std::string line = summarize (name, rows, o.truth);
+      const std::string line = summarize (name, rows, o.truth, o.fpfh);
       summary_csv << line << '\n';
       summary_csv.flush ();
       std::printf ("SUMMARY %s\n", line.c_str ());

@@ -204,19 +204,28 @@ TEST (MultiviewTensorRegistration, GlobalVerificationRefusalMovesOnToTheNextMatc
   };
 
   std::size_t asked = 0;
-  const TensorRegistrationReport accepted = register_with ([&] (const TensorVerificationResult& r) { ++asked; return r.passed (); });
+  Eigen::Matrix4f seen = Eigen::Matrix4f::Zero ();
+  const TensorRegistrationReport accepted = register_with ([&] (const TensorVerificationResult& r) {
+    ++asked;
+    seen = r.transform;
+    return r.passed ();
+  });
   ASSERT_TRUE (accepted.registered);
   EXPECT_EQ (asked, 1u);
   EXPECT_EQ (accepted.hypotheses_refused, 0u);
+  // The acceptor judges the pose the registration reports: between the views' own frames, not
+  // between the centred meshes the search works on (the meshes' origins are centimetres apart).
+  ASSERT_GT ((model->origin - scene->origin).norm (), 10.0 * accepted.resolution);
+  EXPECT_EQ (seen, accepted.transform);
 
-  // Global verification with a D 10 d_res too small refuses the true pose and every repeat of it
-  // (the acceptor sees transforms between the centred meshes).
+  // Global verification with a D 10 d_res too small refuses the true pose and every repeat of it.
   pcl::ObjectDimensions small = dims;
   small.D.array () -= 10.0 * accepted.resolution;
   GlobalVerification global (small, accepted.resolution);
-  global.addView (*model->scan->fine.cloud, Eigen::Affine3d::Identity ());
+  global.addView (*model->scan->fine.cloud, Eigen::Affine3d (Eigen::Translation3d (model->origin)));
+  const Eigen::Affine3d scene_mesh_to_view (Eigen::Translation3d (scene->origin));
   const TensorRegistrationReport refused = register_with ([&] (const TensorVerificationResult& r) {
-    return global.accepts (*scene->scan->fine.cloud, Eigen::Affine3d (r.transform.cast<double> ()));
+    return global.accepts (*scene->scan->fine.cloud, Eigen::Affine3d (r.transform.cast<double> ()) * scene_mesh_to_view);
   });
   EXPECT_FALSE (refused.registered);
   EXPECT_GE (refused.hypotheses_refused, 1u);

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 namespace
@@ -74,6 +75,21 @@ TEST (ObjectDimensions, DIsTheElementwiseMaximumOverViewsAndDerivedParametersFol
   EXPECT_NEAR (dims.dMax (), mean / 4.0, 1e-6);
   EXPECT_NEAR (dims.binSize (), mean / 30.0, 1e-6);
   EXPECT_NEAR (dims.verificationTolerance (), mean / 10.0, 1e-6);
+}
+
+// Dimensions a user gives are sorted as Eq. 1 sorts D; any dimension not positive leaves D unset.
+TEST (ObjectDimensions, GivenDimensionsAreSortedAndUnsetWhenNotPositive)
+{
+  const pcl::ObjectDimensions given = pcl::givenObjectDimensions (Eigen::Vector3d (0.1, 0.3, 0.2));
+  EXPECT_TRUE (given.isSet ());
+  EXPECT_EQ (given.D, Eigen::Vector3d (0.3, 0.2, 0.1));
+  for (const Eigen::Vector3d& bad : {Eigen::Vector3d (0.1, 0.0, 0.2), Eigen::Vector3d (-0.1, 0.3, 0.2), Eigen::Vector3d (0.0, 0.0, 0.0)})
+  {
+    const pcl::ObjectDimensions unset = pcl::givenObjectDimensions (bad);
+    EXPECT_FALSE (unset.isSet ()) << bad.transpose ();
+    EXPECT_EQ (unset.D, Eigen::Vector3d::Zero ());
+  }
+  EXPECT_FALSE (pcl::givenObjectDimensions (Eigen::Vector3d (0.1, std::nan (""), 0.2)).isSet ());
 }
 
 TEST (ObjectDimensions, FarFromOriginKeepsPrecision)

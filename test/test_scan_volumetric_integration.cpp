@@ -119,6 +119,32 @@ TEST (ScanVolumetricIntegration, SphereIsRecoveredWithinAFractionOfAVoxel)
     ASSERT_EQ (e.second, 2) << "edge " << e.first.first << "-" << e.first.second;
 }
 
+// Threads share a view's voxel blocks, and views are added in order: the model is the same, bit for
+// bit, on 1, 2 and 4 threads.
+TEST (ScanVolumetricIntegration, ModelIsTheSameOnAnyNumberOfThreads)
+{
+  const auto views = sphereViews (kSphere, pcl::makeDefaultViewDirections (), smallCamera ());
+  std::vector<pcl::ScanMesh> models (3);
+  const unsigned threads[] = {1, 2, 4};
+  for (std::size_t k = 0; k < models.size (); ++k)
+  {
+    pcl::ScanVolumetricIntegration integration;
+    integration.setNumberOfThreads (threads[k]);
+    integration.setInputViews (views);
+    integration.reconstruct (models[k]);
+  }
+  ASSERT_GT (models[0].polygons.size (), 1000u);
+  for (std::size_t k = 1; k < models.size (); ++k)
+  {
+    ASSERT_EQ (models[k].cloud->size (), models[0].cloud->size ()) << threads[k] << " threads";
+    ASSERT_EQ (models[k].polygons.size (), models[0].polygons.size ()) << threads[k] << " threads";
+    for (std::size_t i = 0; i < models[0].cloud->size (); ++i)
+      ASSERT_EQ ((*models[k].cloud)[i].getVector3fMap (), (*models[0].cloud)[i].getVector3fMap ()) << threads[k] << " threads, vertex " << i;
+    for (std::size_t t = 0; t < models[0].polygons.size (); ++t)
+      ASSERT_EQ (models[k].polygons[t].vertices, models[0].polygons[t].vertices) << threads[k] << " threads, triangle " << t;
+  }
+}
+
 // An orthographic sensor's parallel lines of sight give the same surface.
 TEST (ScanVolumetricIntegration, OrthographicViewsRecoverTheSphere)
 {

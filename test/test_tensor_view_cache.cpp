@@ -336,16 +336,54 @@ TEST_F (TensorViewCacheTest, DimensionsFromCachedExtentsAreEquationOne)
 {
   const auto& pair = preparedPair ();
   TensorViewCache cache ((dir_ / "cache").string ());
-  Eigen::Vector3d d = Eigen::Vector3d::Zero ();
+  std::vector<Eigen::Vector3d> extents (2);
   for (int i = 0; i < 2; ++i)
   {
     const std::string id = "view" + std::to_string (i);
     cache.saveView (id, kKey, *pair.views[i]);
-    Eigen::Vector3d extents;
-    ASSERT_EQ (cache.loadExtents (id, kKey, extents), CacheEntryState::VALID);
-    d = d.cwiseMax (extents);
+    ASSERT_EQ (cache.loadExtents (id, kKey, extents[i]), CacheEntryState::VALID);
   }
-  expectSameBits (pair.dims.D, d, "D");
+  expectSameBits (pair.dims.D, pcl::objectDimensionsFromExtents (extents).D, "D");
+  EXPECT_THROW (pcl::objectDimensionsFromExtents ({}), pcl::InvalidScanException);
+}
+
+// What pcl_tensor_prepare does per view: a first run prepares and stores the meshes, returns them
+// and their extents; a second keeps the entry and returns the same extents without meshes. Tensors
+// computed from the cache's meshes are those of the view, and are kept the next time.
+TEST_F (TensorViewCacheTest, CachedExtentsAndTensorsAreComputedOnceThenKept)
+{
+  const auto& pair = preparedPair ();
+  const auto& scan = pair.rendered[0].view;
+  TensorViewCache cache ((dir_ / "cache").string ());
+  pcl::io::CachedViewReport first, second, third, fourth;
+  Eigen::Vector3d computed, kept;
+  const auto view = pcl::io::cachedExtents (cache, "view", kKey, *scan.cloud, scan.viewpoint, pair.params.preparation, computed, first);
+  ASSERT_TRUE (view);
+  EXPECT_EQ (first.meshes_found, CacheEntryState::MISSING);
+  EXPECT_TRUE (first.meshes_computed);
+  expectSameBits (pcl::principalExtents (*pair.views[0]->scan->fine.cloud), computed, "extents computed");
+  EXPECT_FALSE (pcl::io::cachedExtents (cache, "view", kKey, *scan.cloud, scan.viewpoint, pair.params.preparation, kept, second));
+  EXPECT_EQ (second.meshes_found, CacheEntryState::VALID);
+  EXPECT_FALSE (second.meshes_computed);
+  expectSameBits (computed, kept, "extents kept");
+
+  // No view given: its meshes come from the cache.
+  const auto tensors = pcl::io::cachedTensors (cache, "view", kKey, pair.dims, pair.params, nullptr, third);
+  EXPECT_TRUE (third.tensors_computed);
+  ASSERT_EQ (tensors->size (), pair.views[0]->tensors->size ());
+  for (std::size_t i = 0; i < tensors->size (); ++i)
+    ASSERT_EQ ((*tensors)[i].bin_area, (*pair.views[0]->tensors)[i].bin_area) << "tensor " << i;
+  pcl::io::cachedTensors (cache, "view", kKey, pair.dims, pair.params, nullptr, fourth);
+  EXPECT_EQ (fourth.tensors_found, CacheEntryState::VALID);
+  EXPECT_FALSE (fourth.tensors_computed);
+
+  // Tensors for another D with the meshes entry gone: an I/O error, never tensors of nothing.
+  fs::remove_all (dir_ / "cache");
+  TensorViewCache emptied ((dir_ / "cache").string ());
+  pcl::ObjectDimensions other = pair.dims;
+  other.D *= 1.5;
+  pcl::io::CachedViewReport fifth;
+  EXPECT_THROW (pcl::io::cachedTensors (emptied, "view", kKey, other, pair.params, nullptr, fifth), pcl::IOException);
 }
 
 // Registration on loaded views gives exactly the transform of the views it was saved from.

@@ -173,6 +173,7 @@ namespace
     registration.setNumberOfThreads (threads);
     pcl::ScanVolumetricIntegration integration;
     integration.setParams (integration_params);
+    integration.setNumberOfThreads (threads);
     if (!pairs.is_none ())
       registration.setPairs (pairs.cast<pcl::registration::ViewPairs> ());
 

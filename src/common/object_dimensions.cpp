@@ -109,11 +109,33 @@ namespace pcl
   template <typename PointT> ObjectDimensions
   computeObjectDimensions (const std::vector<const pcl::PointCloud<PointT>*>& views)
   {
-    if (views.empty ())
+    std::vector<Eigen::Vector3d> extents;
+    extents.reserve (views.size ());
+    for (const auto* view : views)
+      extents.push_back (principalExtents (*view));
+    return objectDimensionsFromExtents (extents);
+  }
+
+  ObjectDimensions
+  objectDimensionsFromExtents (const std::vector<Eigen::Vector3d>& extents)
+  {
+    if (extents.empty ())
       PCL_TENSOR_THROW (InvalidScanException, "object dimensions need at least one view");
     ObjectDimensions dims;
-    for (const auto* view : views)
-      dims.D = dims.D.cwiseMax (principalExtents (*view));
+    for (const auto& e : extents)
+      dims.D = dims.D.cwiseMax (e);
+    return dims;
+  }
+
+  ObjectDimensions
+  givenObjectDimensions (const Eigen::Vector3d& D)
+  {
+    ObjectDimensions dims;
+    if ((D.array () > 0.0).all ())
+    {
+      dims.D = D;
+      std::sort (dims.D.data (), dims.D.data () + 3, std::greater<> ());
+    }
     return dims;
   }
 

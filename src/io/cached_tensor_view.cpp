@@ -5,8 +5,6 @@
 #include <pcl/common/tensor_exceptions.h>
 #include "../common/parallel_for.h"
 
-#include <algorithm>
-#include <functional>
 #include <mutex>
 
 namespace pcl
@@ -22,6 +20,21 @@ namespace pcl
       return key;
     }
 
+    namespace
+    {
+      /** The view prepared (prepareTensorView(), centred) and stored in \a cache. */
+      pcl::registration::TensorView::Ptr
+      prepareAndStore (const TensorViewCache& cache, const std::string& id, const TensorViewCacheKey& key,
+                       const pcl::PointCloud<pcl::PointXYZ>& cloud, const ScanViewpoint& viewpoint,
+                       const ScanPreparationParams& params, CachedViewReport& report)
+      {
+        auto view = pcl::registration::prepareTensorView (cloud, viewpoint, params);
+        cache.saveView (id, key, *view);
+        report.meshes_computed = true;
+        return view;
+      }
+    }
+
     pcl::registration::TensorView::Ptr
     cachedView (const TensorViewCache& cache, const std::string& id, const TensorViewCacheKey& key,
                 const pcl::PointCloud<pcl::PointXYZ>& cloud, const ScanViewpoint& viewpoint,
@@ -31,10 +44,46 @@ namespace pcl
       report.meshes_found = cache.loadView (id, key, *view);
       if (report.meshes_found == CacheEntryState::VALID)
         return view;
-      view = pcl::registration::prepareTensorView (cloud, viewpoint, params);
-      cache.saveView (id, key, *view);
-      report.meshes_computed = true;
+      return prepareAndStore (cache, id, key, cloud, viewpoint, params, report);
+    }
+
+    pcl::registration::TensorView::Ptr
+    cachedExtents (const TensorViewCache& cache, const std::string& id, const TensorViewCacheKey& key,
+                   const pcl::PointCloud<pcl::PointXYZ>& cloud, const ScanViewpoint& viewpoint,
+                   const ScanPreparationParams& params, Eigen::Vector3d& extents, CachedViewReport& report)
+    {
+      report.meshes_found = cache.loadExtents (id, key, extents);
+      if (report.meshes_found == CacheEntryState::VALID)
+        return nullptr;
+      auto view = prepareAndStore (cache, id, key, cloud, viewpoint, params, report);
+      extents = principalExtents (*view->scan->fine.cloud);  // what saveView stored
       return view;
+    }
+
+    pcl::PointCloud<pcl::TensorDescriptor>::Ptr
+    cachedTensors (const TensorViewCache& cache, const std::string& id, const TensorViewCacheKey& key,
+                   const ObjectDimensions& dims, const pcl::registration::TensorRegistrationParams& params,
+                   const pcl::registration::TensorView* view, CachedViewReport& report)
+    {
+      const std::uint64_t tensor_hash = hashTensorParameters (params);
+      pcl::PointCloud<pcl::TensorDescriptor>::Ptr tensors;
+      report.tensors_found = cache.loadTensors (id, key, dims, tensor_hash, tensors);
+      if (report.tensors_found == CacheEntryState::VALID)
+        return tensors;
+      pcl::registration::TensorView stored;
+      if (!view)
+      {
+        if (const auto state = cache.loadView (id, key, stored); state != CacheEntryState::VALID)
+          PCL_TENSOR_THROW (IOException, "the meshes of view " << id << " turned " << toString (state)
+                            << " in the cache during the run (another writer?); run again");
+        view = &stored;
+      }
+      if (!view->scan)
+        PCL_TENSOR_THROW (BadArgumentException, "the tensors of view " << id << " need its meshes");
+      tensors = pcl::registration::computeViewTensors (*view->scan, dims, params);
+      cache.saveTensors (id, key, dims, tensor_hash, *tensors);
+      report.tensors_computed = true;
+      return tensors;
     }
 
     void
@@ -44,16 +93,7 @@ namespace pcl
     {
       if (!view.scan)
         PCL_TENSOR_THROW (BadArgumentException, "the tensors of view " << id << " need its meshes");
-      const std::uint64_t tensor_hash = hashTensorParameters (params);
-      pcl::PointCloud<pcl::TensorDescriptor>::Ptr tensors;
-      report.tensors_found = cache.loadTensors (id, key, dims, tensor_hash, tensors);
-      if (report.tensors_found != CacheEntryState::VALID)
-      {
-        tensors = pcl::registration::computeViewTensors (*view.scan, dims, params);
-        cache.saveTensors (id, key, dims, tensor_hash, *tensors);
-        report.tensors_computed = true;
-      }
-      view.tensors = tensors;
+      view.tensors = cachedTensors (cache, id, key, dims, params, &view, report);
       view.dimensions = dims;
     }
 
@@ -64,11 +104,9 @@ namespace pcl
       dimensionsOf (const std::vector<pcl::registration::TensorView::Ptr>& views,
                     const pcl::registration::MultiviewRegistrationParams& params)
       {
-        ObjectDimensions dims;
-        dims.D = params.object_dimensions;
-        std::sort (dims.D.data (), dims.D.data () + 3, std::greater<> ());
-        if ((dims.D.array () > 0.0).all ())
-          return dims;
+        const ObjectDimensions given = givenObjectDimensions (params.object_dimensions);
+        if (given.isSet ())
+          return given;
         std::vector<const pcl::PointCloud<pcl::PointNormal>*> fine;
         for (const auto& v : views)
           if (v)

@@ -130,7 +130,9 @@ namespace pcl
     toJson (const pcl::VolumetricIntegrationReport& r)
     {
       return {{"voxel_size", r.voxel_size}, {"voxels", r.voxels}, {"bytes", r.volume_bytes},
-              {"views", r.views}, {"components", r.components}, {"removed_components", r.removed_components}};
+              {"views", r.views}, {"components", r.components}, {"removed_components", r.removed_components},
+              {"timings_ms", {{"allocate", r.allocate_ms}, {"integrate", r.integrate_ms}, {"extract", r.extract_ms},
+                              {"cleanup", r.cleanup_ms}}}};
     }
 
     std::string

@@ -85,8 +85,8 @@ namespace pcl
 
     namespace
     {
-      /** A view's meshes' frame -> its own frame: a view prepared centred (prepareTensorView, a cache)
-        * carries its origin; one meshed here has none. */
+      /** A view's meshes' frame -> its own frame: the meshes are centred on the view's origin
+        * (prepareTensorView), unless the caller gave them prepared otherwise. */
       Eigen::Affine3d
       meshToView (const ViewRegistrationStatus& v)
       {
@@ -141,12 +141,13 @@ namespace pcl
           std::mutex mutex_;
       };
 
-      /** Stage 1: M_i and M'_i of every view, on \a threads threads; a view that cannot be meshed is
-        * marked and left out. */
-      void
+      /** Stage 1: M_i and M'_i of every view, on \a threads threads, centred as the apps and the cache
+        * centre them (prepareTensorView); a view that cannot be meshed is marked and left out (null). */
+      Views
       prepareViews (const std::vector<MultiviewInput>& inputs, const MultiviewRegistrationParams& params,
                     const MultiviewProgress& progress, unsigned threads, MultiviewRegistrationResult& result)
       {
+        Views meshed (inputs.size ());
         StageProgress stage (progress, MultiviewStage::PREPARATION, inputs.size ());
         pcl::detail::parallelFor (inputs.size (), threads, [&] (std::size_t i) {
           ViewRegistrationStatus& view = result.views[i];
@@ -155,12 +156,12 @@ namespace pcl
           try
           {
             if (inputs[i].view)
-              view.prepared = inputs[i].view->scan;
+              meshed[i] = inputs[i].view;
             else if (!inputs[i].cloud)
               PCL_TENSOR_THROW (InvalidScanException, "the view has no cloud");
             else
-              view.prepared = std::make_shared<const PreparedScan> (
-                  prepareScan (*inputs[i].cloud, inputs[i].viewpoint, params.pairwise.preparation));
+              meshed[i] = prepareTensorView (*inputs[i].cloud, inputs[i].viewpoint, params.pairwise.preparation);
+            view.prepared = meshed[i]->scan;
           }
           catch (const InvalidScanException& e)
           {
@@ -169,6 +170,7 @@ namespace pcl
           view.prepare_ms = watch.getTime ();
           stage.step ();
         });
+        return meshed;
       }
 
       /** D from every usable view (Eq. 1), unless it is known, and the mean d_res. */
@@ -185,12 +187,8 @@ namespace pcl
           }
         if (fine.empty ())
           return;
-        if ((params.object_dimensions.array () > 0.0).all ())
-        {
-          result.dimensions.D = params.object_dimensions;
-          std::sort (result.dimensions.D.data (), result.dimensions.D.data () + 3, std::greater<> ());
-        }
-        else
+        result.dimensions = givenObjectDimensions (params.object_dimensions);
+        if (!result.dimensions.isSet ())
           result.dimensions = computeObjectDimensions<pcl::PointNormal> (fine);
         result.resolution = resolution / static_cast<double> (fine.size ());
       }
@@ -198,8 +196,8 @@ namespace pcl
       /** Stage 2: each usable view's tensors, once, on \a threads threads: the views every
         * registration takes (TensorView). */
       Views
-      computeTensors (const std::vector<MultiviewInput>& inputs, const MultiviewRegistrationParams& params,
-                      const MultiviewProgress& progress, unsigned threads, MultiviewRegistrationResult& result)
+      computeTensors (const Views& meshed, const MultiviewRegistrationParams& params, const MultiviewProgress& progress,
+                      unsigned threads, MultiviewRegistrationResult& result)
       {
         Views tensors (result.views.size ());
         StageProgress stage (progress, MultiviewStage::TENSORS, result.views.size ());
@@ -210,15 +208,11 @@ namespace pcl
             pcl::StopWatch watch;
             try
             {
-              const TensorView::ConstPtr& given = inputs[i].view;
-              if (given && given->tensors && given->dimensions.D == result.dimensions.D)
+              const TensorView::ConstPtr& given = meshed[i];
+              if (given->tensors && given->dimensions.D == result.dimensions.D)
                 tensors[i] = given;
               else
-              {
-                TensorView prepared = given ? *given : TensorView ();
-                prepared.scan = view.prepared;
-                tensors[i] = withTensors (prepared, result.dimensions, params.pairwise);
-              }
+                tensors[i] = withTensors (*given, result.dimensions, params.pairwise);
               view.view = tensors[i];
             }
             catch (const InvalidScanException& e)
@@ -544,14 +538,14 @@ namespace pcl
       pcl::StopWatch total, watch;
       MultiviewRegistrationResult result;
       result.views.resize (views.size ());
-      prepareViews (views, params_, progress_, threads_, result);
+      const Views meshed = prepareViews (views, params_, progress_, threads_, result);
       measureObject (params_, result);
       result.timings.prepare_ms = watch.getTime ();
       if (result.resolution <= 0.0)
         return result;  // no usable view: none is registered, each says why
 
       watch.reset ();
-      const Views tensors = computeTensors (views, params_, progress_, threads_, result);
+      const Views tensors = computeTensors (meshed, params_, progress_, threads_, result);
       result.timings.tensors_ms = watch.getTime ();
 
       watch.reset ();

@@ -4,6 +4,7 @@
  */
 #include "ranked_view_registration.h"
 #include "../common/parallel_for.h"
+#include "../common/union_find.h"
 
 #include <pcl/common/time.h>
 
@@ -20,7 +21,7 @@ namespace pcl
       namespace
       {
         /** Pairs registered at once. Fixed, not the thread count, so that the result is the same on any
-          * number of threads; the pairs of one batch join distinct groups, so none is wasted. */
+          * number of threads; the pairs of one batch close no loop among groups, so none is wasted. */
         constexpr std::size_t kPairBatch = 8;
 
         /** The tree that joins the views of each group, rooted at the group's reference view. */
@@ -180,14 +181,17 @@ namespace pcl
               return params_.max_failed_pairs > 0 && failed_[view] >= params_.max_failed_pairs;
             }
 
-            /** The next candidates, best first, that join distinct groups, no group twice. */
+            /** The next candidates, best first, that join distinct groups and close no loop among the
+              * groups with the batch's other pairs: whichever of them pass, each joins two groups still
+              * apart when its turn comes. A group may be in several pairs, so a batch stays full when one
+              * group has grown around most views. */
             std::vector<std::size_t>
             nextBatch (std::vector<char>& decided)
             {
               std::vector<std::size_t> batch;
               if (largestGroup () == usable_)
                 return batch;
-              std::vector<int> used;
+              pcl::detail::UnionFind linked (groups_.size ());
               for (std::size_t c = 0; c < decided.size () && batch.size () < kPairBatch; ++c)
               {
                 if (decided[c])
@@ -199,10 +203,9 @@ namespace pcl
                   decided[c] = 1;  // already joined, a view given up, or enough tries between the groups
                   continue;
                 }
-                if (std::find (used.begin (), used.end (), a) != used.end () || std::find (used.begin (), used.end (), b) != used.end ())
-                  continue;  // waits for the next batch, when it may join groups grown by this one
-                used.push_back (a);
-                used.push_back (b);
+                if (linked.find (a) == linked.find (b))
+                  continue;  // would close a loop with this batch's pairs: waits for the next batch
+                linked.unite (a, b);
                 batch.push_back (c);
                 if (retry_limit_ > 0)
                   ++retried_[{std::min (a, b), std::max (a, b)}];

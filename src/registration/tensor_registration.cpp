@@ -46,7 +46,15 @@ namespace pcl
         Eigen::Matrix4f centred_guess;
         if (guess)
           centred_guess = betweenCentredMeshes (*guess, *model, *scene);
-        searchTensorViews (*model, *scene, dims, params, accept, guess ? &centred_guess : nullptr, report);
+        // The search works on the centred meshes; the caller's acceptor judges poses between its views.
+        HypothesisAcceptor accept_between_views;
+        if (accept)
+          accept_between_views = [&] (const TensorVerificationResult& local) {
+            TensorVerificationResult between_views = local;
+            between_views.transform = betweenViewFrames (local.transform, *model, *scene);
+            return accept (between_views);
+          };
+        searchTensorViews (*model, *scene, dims, params, accept_between_views, guess ? &centred_guess : nullptr, report);
         if (report.registered || report.ambiguous)
           report.verification.transform = betweenViewFrames (report.verification.transform, *model, *scene);
         if (report.registered)

@@ -7,6 +7,7 @@
 #include <pcl/surface/range_view_projection.h>
 
 #include "tsdf_block_volume.h"
+#include "../common/parallel_for.h"
 
 #include <algorithm>
 #include <cmath>
@@ -81,17 +82,17 @@ namespace pcl
       return distance >= -0.5f * truncation ? 1.0f : std::max (0.0f, 2.0f * (1.0f + distance / truncation));
     }
 
-    /** Add one view's truncated signed distances to the voxels near its surface. Whole blocks are
-      * skipped when the z-buffer says every voxel is more than the truncation from the surface. */
+    /** Add one view's truncated signed distances to the voxels near its surface, on \a threads threads,
+      * each block on one. Whole blocks are skipped when the z-buffer says every voxel is more than the
+      * truncation from the surface. */
     void
     integrateView (const RangeViewProjection& projection, const Eigen::Affine3d& world_to_scan, float truncation,
-                   TsdfBlockVolume& volume)
+                   unsigned threads, TsdfBlockVolume& volume)
     {
       const Eigen::Affine3f world_to_sensor = projection.getScanToSensor () * world_to_scan.cast<float> ();
       const float s = static_cast<float> (volume.voxelSize ());
       const Eigen::Matrix3f step = world_to_sensor.linear () * s;
-      for (std::size_t b = 0; b < volume.blockCount (); ++b)
-      {
+      pcl::detail::parallelFor (volume.blockCount (), threads, [&] (std::size_t b) {
         const Eigen::Vector3f origin = world_to_sensor * (volume.blockCoordinates (b).cast<float> () * (kBlockSide * s));
         // The block's corner voxels in the sensor frame bound all its voxels.
         Eigen::Vector3f lo = origin, hi = origin;
@@ -103,10 +104,10 @@ namespace pcl
         }
         float min_depth, max_depth;
         if (!projection.depthRange (lo, hi, min_depth, max_depth))
-          continue;
+          return;
         // Along a line of sight the range difference is at least the depth difference.
         if (lo.z () > max_depth + truncation || hi.z () < min_depth - truncation)
-          continue;
+          return;
         detail::TsdfBlock& block = volume.block (b);
         RangeViewProjection::Sample sample;
         int i = 0;
@@ -127,7 +128,7 @@ namespace pcl
               v.weight = total;
             }
           }
-      }
+      });
     }
 
     /** Union-find root with path halving. */
@@ -272,7 +273,7 @@ namespace pcl
       const RangeViewProjection projection (*views_[i].mesh, params_.border_ramp_edges, params_.pixels_per_resolution,
                                             kMaxZBufferPixels, resolutions[i]);
       report_.peak_zbuffer_bytes = std::max (report_.peak_zbuffer_bytes, projection.memoryBytes ());
-      integrateView (projection, views_[i].pose.inverse (), truncation, volume);
+      integrateView (projection, views_[i].pose.inverse (), truncation, threads_, volume);
     }
     for (std::size_t b = 0; b < volume.blockCount (); ++b)
       for (const auto& v : volume.block (b))

@@ -22,6 +22,8 @@ namespace pcl
     /** \brief D = [D_x D_y D_z] (Eq. 1), sorted from the largest principal extent to the smallest. */
     Eigen::Vector3d D = Eigen::Vector3d::Zero ();
 
+    /** \brief Whether D is set: every dimension positive. */
+    bool isSet () const { return (D.array () > 0.0).all (); }
     /** \brief mean(D_x, D_y, D_z). */
     double mean () const { return D.mean (); }
     /** \brief d_min = mean(D)/6 (Eq. 2). */
@@ -83,4 +85,18 @@ namespace pcl
   /** \brief D from all the views of an object (Eq. 1). */
   template <typename PointT> ObjectDimensions
   computeObjectDimensions (const std::vector<const pcl::PointCloud<PointT>*>& views);
+
+  /** \brief D from each view's principalExtents() (Eq. 1: their elementwise maximum), for views whose
+    * extents are known without their points (a cache).
+    * \throw InvalidScanException when \a extents is empty
+    */
+  ObjectDimensions
+  objectDimensionsFromExtents (const std::vector<Eigen::Vector3d>& extents);
+
+  /** \brief D as a user gives it, in any order, sorted from largest to smallest as Eq. 1 gives it, so
+    * that tensors computed for a given D are found again whatever order it was written in. Not set
+    * (ObjectDimensions::isSet() false) when any dimension is not positive: D is then measured.
+    */
+  ObjectDimensions
+  givenObjectDimensions (const Eigen::Vector3d& D);
 }

@@ -38,8 +38,26 @@ namespace pcl
                 const pcl::PointCloud<pcl::PointXYZ>& cloud, const ScanViewpoint& viewpoint,
                 const ScanPreparationParams& params, CachedViewReport& report);
 
-    /** \brief \a view's tensors for D = \a dims from \a cache when VALID, else computed
-      * (computeViewTensors()) and stored. \a view must hold its meshes. */
+    /** \brief A view's principalExtents() (Eq. 1 for one view) from its meshes entry in \a cache when VALID
+      * for \a key, without decoding the meshes, else the view prepared as cachedView() prepares it, stored,
+      * and returned with its extents: what D over many views needs.
+      * \return the view when it was prepared here, null when the entry was kept
+      * \throw as cachedView() */
+    pcl::registration::TensorView::Ptr
+    cachedExtents (const TensorViewCache& cache, const std::string& id, const TensorViewCacheKey& key,
+                   const pcl::PointCloud<pcl::PointXYZ>& cloud, const ScanViewpoint& viewpoint,
+                   const ScanPreparationParams& params, Eigen::Vector3d& extents, CachedViewReport& report);
+
+    /** \brief A view's tensors for D = \a dims from \a cache when VALID, else computed (computeViewTensors())
+      * from \a view's meshes, or when \a view is null from the meshes entry in \a cache, and stored.
+      * \throw pcl::IOException when the meshes are needed and their entry is not VALID (another writer
+      * changed it during the run) or the tensors cannot be written */
+    pcl::PointCloud<pcl::TensorDescriptor>::Ptr
+    cachedTensors (const TensorViewCache& cache, const std::string& id, const TensorViewCacheKey& key,
+                   const ObjectDimensions& dims, const pcl::registration::TensorRegistrationParams& params,
+                   const pcl::registration::TensorView* view, CachedViewReport& report);
+
+    /** \brief \a view's tensors for D = \a dims (cachedTensors()) set in it. \a view must hold its meshes. */
     void
     addCachedTensors (const TensorViewCache& cache, const std::string& id, const TensorViewCacheKey& key,
                       const ObjectDimensions& dims, const pcl::registration::TensorRegistrationParams& params,

@@ -39,9 +39,10 @@ namespace pcl
         * Levoy, 1994). */
       bool skip_boundary = true;
       /** Stop when no view turns more than this (degrees) ... */
-      double min_rotation = 1e-4;
-      /** ... and none moves more than this (d_res). */
-      double min_translation = 1e-3;
+      double min_rotation = 1e-2;
+      /** ... and none moves more than this (d_res). Both lie well under the scans' noise and above the
+        * limit cycle in which re-pairing leaves the views (doc/design.md#multiview-point-to-plane-icp). */
+      double min_translation = 1e-2;
     };
 
     /** \brief What multiviewPointToPlaneIcp() did. */

@@ -117,7 +117,8 @@ namespace pcl
 
     /** \brief A further test of a hypothesis that passed local verification, e.g. global verification
       * (Section 4.2; Fig. 7, steps 15-16): return false to refuse it, and the next tensor match is tried.
-      * \param[in] result the locally verified hypothesis (result.transform: scene -> model, refined)
+      * \param[in] result the locally verified hypothesis (result.transform: scene -> model, refined, between
+      *            the views' own frames, as the registration reports it)
       */
     using HypothesisAcceptor = std::function<bool (const TensorVerificationResult& result)>;
   }

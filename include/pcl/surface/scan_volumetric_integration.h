@@ -107,6 +107,11 @@ namespace pcl
       void setMaxMemoryBytes (std::size_t bytes);
       std::size_t getMaxMemoryBytes () const { return params_.max_memory_bytes; }
 
+      /** \brief Set the threads that add a view's distances, a share of the voxel blocks each (0, the
+        * default: every core). The model is the same for any number: views are added in order. */
+      void setNumberOfThreads (unsigned threads) { threads_ = threads; }
+      unsigned getNumberOfThreads () const { return threads_; }
+
       /** \brief Set the views to integrate. */
       void setInputViews (const std::vector<IntegrationView>& views) { views_ = views; }
       const std::vector<IntegrationView>& getInputViews () const { return views_; }
@@ -128,5 +133,6 @@ namespace pcl
       VolumetricIntegrationParams params_;
       std::vector<IntegrationView> views_;
       VolumetricIntegrationReport report_;
+      unsigned threads_ = 0;
   };
 }
