@@ -72,6 +72,7 @@ namespace
     pcl::registration::TensorVerificationResult truth;  ///< the ground truth, verified with D from the pair
     double truth_conditioning = -1.0;
     PairResult fpfh;  ///< PCL's FPFH baseline on the pair (with --fpfh)
+    std::size_t hypotheses_tried = 0;  ///< verified up to the one reported, or all of them (TensorRegistrationReport)
   };
 
   void
@@ -207,6 +208,7 @@ namespace
     pair.result.overlap = pairOverlap (model, scene);
     pair.ambiguous = report.ambiguous;
     pair.reported = report.verification;
+    pair.hypotheses_tried = report.hypotheses_tried;
     if (report.registered)
       pair.reported_conditioning = conditioningAt (model, scene, report.transform, pair.result.resolution);
     if (o.truth)
@@ -354,7 +356,7 @@ namespace
       for (const auto& v : {p.truth_violation, p.reported_violation})
         out << ',' << v[0] << ',' << v[1] << ',' << v[2];
       out << ',' << p.fpfh.registered << ',' << p.fpfh.correct << ',' << p.fpfh.rotation_error_deg << ','
-          << p.fpfh.translation_error_res << ',' << p.fpfh.time_ms << '\n';
+          << p.fpfh.translation_error_res << ',' << p.fpfh.time_ms << ',' << p.hypotheses_tried << '\n';
     }
     out.flush ();
   }
@@ -423,7 +425,8 @@ main (int argc, char** argv)
                  "truth_model_seen,truth_scene_seen,truth_model_matched,truth_scene_matched,"
                  "model_seen,scene_seen,model_matched,scene_matched,"
                  "truth_free_space_2,truth_free_space_4,truth_free_space_8,free_space_2,free_space_4,free_space_8,"
-                 "fpfh_registered,fpfh_correct,fpfh_rotation_error_deg,fpfh_translation_error_res,fpfh_time_ms\n";
+                 "fpfh_registered,fpfh_correct,fpfh_rotation_error_deg,fpfh_translation_error_res,fpfh_time_ms,"
+                 "hypotheses_tried\n";
     summary_csv << summaryHeader () << '\n';
     std::printf ("%s\n", summaryHeader ().c_str ());
     for (const auto& [name, load] : objectSets (o))

@@ -71,8 +71,9 @@ namespace pcl
     {
       /** Cached pair results of an older verification are stale even under the same parameters: raise
         * this when verification changes its verdicts (2: the free-space check's occlusion and noise rules;
-        * 3: rival turns along the screw of the least constrained motion). */
-      constexpr int kVerificationRevision = 3;
+        * 3: rival turns along the screw of the least constrained motion; 4: a rival probe's ICP ends where
+        * a stage is short of pairs). */
+      constexpr int kVerificationRevision = 4;
     }
 
     TensorViewCacheKey

@@ -114,6 +114,19 @@ namespace pcl
     }
 
     double
+    CorrespondenceRejectorTensorVerification::requiredCorrespondences () const
+    {
+      return params_.correspondence_fraction *
+             static_cast<double> (std::min (model_->fine.cloud->size (), scene_->fine.cloud->size ()));
+    }
+
+    std::size_t
+    CorrespondenceRejectorTensorVerification::icpMinPairs () const
+    {
+      return static_cast<std::size_t> (std::floor (scenePairsNeeded (kSampledFineShare * 2.0 * requiredCorrespondences ())));
+    }
+
+    double
     CorrespondenceRejectorTensorVerification::getResolution () const
     {
       return model_ && scene_ ? 0.5 * (model_->resolution + scene_->resolution) : 0.0;
@@ -327,7 +340,7 @@ namespace pcl
     CorrespondenceRejectorTensorVerification::refine (const Eigen::Matrix4f& hypothesis)
     {
       prepare ();
-      return icp (hypothesis, 0).transform;
+      return icp (hypothesis, icpMinPairs ()).transform;
     }
 
     bool
@@ -347,8 +360,7 @@ namespace pcl
       }
 
       // Steps 7-9: enough correspondences (n_c), estimated on the samples.
-      result.required_correspondences = params_.correspondence_fraction *
-          static_cast<double> (std::min (model_->fine.cloud->size (), scene_->fine.cloud->size ()));
+      result.required_correspondences = requiredCorrespondences ();
       result.coarse_correspondences = correspondences (*scene_sample_, *model_sample_, hypothesis, params_.coarse_distance * d_res);
       if (result.coarse_correspondences < result.required_correspondences)
       {
@@ -361,8 +373,7 @@ namespace pcl
       // need not run.
       if (run_icp)
       {
-        const PointToPlaneIcpResult refined =
-            icp (hypothesis, static_cast<std::size_t> (std::floor (scenePairsNeeded (kSampledFineShare * 2.0 * result.required_correspondences))));
+        const PointToPlaneIcpResult refined = icp (hypothesis, icpMinPairs ());
         result.transform = refined.transform;
         result.icp_fitness = refined.rms;
       }

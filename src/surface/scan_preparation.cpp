@@ -108,6 +108,9 @@ namespace pcl
     stages.reduction.reduce (coarse.polygons.empty () ? scan.fine : coarse, scan.reduced);
     stages.normals.compute (scan.reduced, scan.fine, scan.resolution);
     scan.noise = estimateScanNoise (*scan.fine.cloud, 3.0 * scan.resolution);
+    // M_i is kept for the whole run: give back what was reserved for every pixel of the image.
+    scan.fine.cloud->points.shrink_to_fit ();
+    scan.fine.polygons.shrink_to_fit ();
     return scan;
   }
 

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numeric>
 
 namespace pcl
@@ -268,12 +269,22 @@ namespace pcl
     report_.allocate_ms = watch.getTime ();
 
     watch.reset ();
-    for (std::size_t i = 0; i < views_.size (); ++i)
+    // A view's z-buffer is drawn on one thread: as many as there are threads are drawn at once, then
+    // integrated in order, so that memory holds that many z-buffers at most.
+    const std::size_t chunk = pcl::detail::threadCount (threads_);
+    for (std::size_t first = 0; first < views_.size (); first += chunk)
     {
-      const RangeViewProjection projection (*views_[i].mesh, params_.border_ramp_edges, params_.pixels_per_resolution,
-                                            kMaxZBufferPixels, resolutions[i]);
-      report_.peak_zbuffer_bytes = std::max (report_.peak_zbuffer_bytes, projection.memoryBytes ());
-      integrateView (projection, views_[i].pose.inverse (), truncation, threads_, volume);
+      std::vector<std::unique_ptr<RangeViewProjection>> projections (std::min (chunk, views_.size () - first));
+      pcl::detail::parallelFor (projections.size (), threads_, [&] (std::size_t k) {
+        projections[k] = std::make_unique<RangeViewProjection> (*views_[first + k].mesh, params_.border_ramp_edges,
+                                                                params_.pixels_per_resolution, kMaxZBufferPixels,
+                                                                resolutions[first + k]);
+      });
+      for (std::size_t k = 0; k < projections.size (); ++k)
+      {
+        report_.peak_zbuffer_bytes = std::max (report_.peak_zbuffer_bytes, projections[k]->memoryBytes ());
+        integrateView (*projections[k], views_[first + k].pose.inverse (), truncation, threads_, volume);
+      }
     }
     for (std::size_t b = 0; b < volume.blockCount (); ++b)
       for (const auto& v : volume.block (b))

@@ -89,7 +89,8 @@ namespace pcl
         bool verify (const Eigen::Matrix4f& hypothesis, TensorVerificationResult& result, bool run_icp = true);
 
         /** \brief \a hypothesis refined by verify()'s ICP alone, without any check: where verify() would
-          * judge it. Lets a caller skip the checks of a hypothesis that converges to a pose it knows.
+          * judge it (ICP ends early, as there, where too few pairs are left for the pose to pass). Lets a
+          * caller skip the checks of a hypothesis that converges to a pose it knows.
           * \throw pcl::BadArgumentException when the model or the scene is missing
           */
         Eigen::Matrix4f refine (const Eigen::Matrix4f& hypothesis);
@@ -156,6 +157,11 @@ namespace pcl
         /** Points of the scene's sample that must have a correspondence for correspondences() on the
           * samples to reach \a correspondences. */
         double scenePairsNeeded (double correspondences) const;
+        /** n_c: correspondence_fraction of the smaller view's points (Section 4.1, step 7). */
+        double requiredCorrespondences () const;
+        /** The pairs below which verify()'s ICP ends: fewer than the sampled fine count needs, even at a
+          * coarse stage's wider distance, and the pose would fail that count. */
+        std::size_t icpMinPairs () const;
         /** verify()'s ICP from \a hypothesis on the scene's sample; stages before the last end with
           * fewer than \a min_pairs pairs (PointToPlaneIcpParams::min_pairs). */
         PointToPlaneIcpResult icp (const Eigen::Matrix4f& hypothesis, std::size_t min_pairs) const;
