@@ -7,7 +7,7 @@
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
 #include <pcl/console/time.h>
-#include <pcl/io/ply_io.h>
+#include <pcl/io/scan_mesh_io.h>
 #include <pcl/io/range_scan_io.h>
 #include <pcl/surface/scan_preparation.h>
 
@@ -58,15 +58,6 @@ namespace
     return params;
   }
 
-  void
-  savePly (const std::string& path, const pcl::ScanMesh& mesh)
-  {
-    pcl::PolygonMesh out;
-    pcl::toPolygonMesh (mesh, out);
-    if (pcl::io::savePLYFileBinary (path, out) < 0)
-      PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << path << "'");
-  }
-
   int
   run (int argc, char** argv)
   {
@@ -97,9 +88,9 @@ namespace
     print_info (" faces in "); print_value ("%g", timer.toc ()); print_info (" ms\n");
 
     timer.tic ();
-    savePly (output, prepared.reduced);
+    pcl::io::saveScanMesh (output, prepared.reduced);
     if (!fine_output.empty ())
-      savePly (fine_output, prepared.fine);
+      pcl::io::saveScanMesh (fine_output, prepared.fine);
     print_info ("Saved in "); print_value ("%g", timer.toc ()); print_info (" ms\n");
     return 0;
   }

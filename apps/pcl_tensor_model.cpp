@@ -14,7 +14,7 @@
 #include <pcl/io/atomic_file.h>
 #include <pcl/io/cached_tensor_view.h>
 #include <pcl/io/model_run_record.h>
-#include <pcl/io/ply_io.h>
+#include <pcl/io/scan_mesh_io.h>
 #include <pcl/io/recorded_pair_registration.h>
 #include <pcl/io/range_scan_io.h>
 #include <pcl/io/registration_report_json.h>
@@ -165,11 +165,8 @@ namespace
   void
   saveModel (const std::string& path, const pcl::ScanMesh& model)
   {
-    pcl::PolygonMesh mesh;
-    pcl::toPolygonMesh (model, mesh);
     pcl::io::AtomicFileWriter file (path);
-    if (pcl::io::savePLYFileBinary (file.temporaryPath (), mesh) < 0)
-      PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << path << "'");
+    pcl::io::saveScanMesh (file.temporaryPath (), model);
     file.commit ();
   }
 

@@ -5,6 +5,10 @@
 #include "file_input.h"
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/io/ply_io.h>
+#include "byte_codec.h"
+
+#include <fstream>
+#include <sstream>
 
 
 namespace pcl
@@ -28,6 +32,45 @@ namespace pcl
       if (mesh.polygons.empty ())
         PCL_TENSOR_THROW (InvalidScanException, "'" << path << "' holds no triangle");
       return mesh;
+    }
+
+    namespace
+    {
+      std::string
+      plyHeader (const ScanMesh& mesh)
+      {
+        std::ostringstream h;
+        h << "ply\nformat binary_little_endian 1.0\ncomment written by pcl_tensor\n"
+          << "element vertex " << mesh.cloud->size () << "\n";
+        for (const char* field : {"x", "y", "z", "normal_x", "normal_y", "normal_z", "curvature"})
+          h << "property float " << field << "\n";
+        h << "element face " << mesh.polygons.size () << "\nproperty list uchar int vertex_indices\nend_header\n";
+        return h.str ();
+      }
+    }
+
+    void
+    saveScanMesh (const std::string& path, const ScanMesh& mesh)
+    {
+      for (const auto& poly : mesh.polygons)
+        if (poly.vertices.size () > 255)
+          PCL_TENSOR_THROW (pcl::IOException, "a polygon of " << poly.vertices.size () << " vertices cannot be written to PLY");
+      detail::ByteWriter out;
+      out.bytes () = plyHeader (mesh);
+      out.bytes ().reserve (out.bytes ().size () + mesh.cloud->size () * 7 * sizeof (float) + mesh.polygons.size () * 13);
+      for (const auto& p : *mesh.cloud)
+        out.put (p.x).put (p.y).put (p.z).put (p.normal_x).put (p.normal_y).put (p.normal_z).put (p.curvature);
+      for (const auto& poly : mesh.polygons)
+      {
+        out.put (static_cast<std::uint8_t> (poly.vertices.size ()));
+        for (const auto idx : poly.vertices)
+          out.put (static_cast<std::int32_t> (idx));
+      }
+      std::ofstream file (path, std::ios::binary | std::ios::trunc);
+      file.write (out.bytes ().data (), static_cast<std::streamsize> (out.bytes ().size ()));
+      file.close ();
+      if (!file)
+        PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << path << "'");
     }
   }
 }

