@@ -36,6 +36,7 @@ namespace pcl
 
     namespace
     {
+      /** The header of saveScanMesh's files: the vertex fields of toPolygonMesh(), then the triangles. */
       std::string
       plyHeader (const ScanMesh& mesh)
       {

@@ -24,8 +24,8 @@ namespace pcl
 
     /** \brief Write a ScanMesh as binary little-endian PLY: vertices with the fields of toPolygonMesh()
       * (x, y, z, normal_x, normal_y, normal_z, curvature, as float) and triangles as lists of int.
-      * It reads back with loadScanMesh() or pcl::io::loadPLYFile, and writes a model of 250,000
-      * triangles several times faster than pcl::io::savePLYFileBinary on a PolygonMesh.
+      * It reads back with loadScanMesh() or pcl::io::loadPLYFile. Unlike pcl::io::savePLYFileBinary,
+      * it goes through no PCLPointCloud2 blob: a model is written from one buffer (doc/log.md).
       * \throw pcl::IOException when the file cannot be written
       * \ingroup io
       */
