@@ -161,15 +161,6 @@ namespace
     file.commit ();
   }
 
-  /** One component's model, written whole or not at all: a run killed part-way leaves the previous one. */
-  void
-  saveModel (const std::string& path, const pcl::ScanMesh& model)
-  {
-    pcl::io::AtomicFileWriter file (path);
-    pcl::io::saveScanMesh (file.temporaryPath (), model);
-    file.commit ();
-  }
-
   /** What was built from one component. */
   struct ComponentModel
   {
@@ -392,7 +383,7 @@ namespace
     timer.tic ();
     for (std::size_t c = 0; c < models.size (); ++c)
     {
-      saveModel (models[c].model, models[c].mesh);
+      pcl::io::saveScanMesh (models[c].model, models[c].mesh);
       saveConf (models[c].conf, result, static_cast<int> (c));
     }
     t.write_ms = timer.toc ();

@@ -5,9 +5,9 @@
 #include "file_input.h"
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/io/ply_io.h>
+#include <pcl/io/atomic_file.h>
 #include "byte_codec.h"
 
-#include <fstream>
 #include <sstream>
 
 
@@ -53,25 +53,21 @@ namespace pcl
     void
     saveScanMesh (const std::string& path, const ScanMesh& mesh)
     {
-      for (const auto& poly : mesh.polygons)
-        if (poly.vertices.size () > 255)
-          PCL_TENSOR_THROW (pcl::IOException, "a polygon of " << poly.vertices.size () << " vertices cannot be written to PLY");
+      constexpr std::size_t vertex_bytes = 7 * sizeof (float), triangle_bytes = 1 + 3 * sizeof (std::int32_t);
       detail::ByteWriter out;
       out.bytes () = plyHeader (mesh);
-      out.bytes ().reserve (out.bytes ().size () + mesh.cloud->size () * 7 * sizeof (float) + mesh.polygons.size () * 13);
+      out.bytes ().reserve (out.bytes ().size () + mesh.cloud->size () * vertex_bytes + mesh.polygons.size () * triangle_bytes);
       for (const auto& p : *mesh.cloud)
         out.put (p.x).put (p.y).put (p.z).put (p.normal_x).put (p.normal_y).put (p.normal_z).put (p.curvature);
       for (const auto& poly : mesh.polygons)
       {
+        if (poly.vertices.size () > 255)  // the PLY list's count is a uchar
+          PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << path << "': a polygon of " << poly.vertices.size () << " vertices");
         out.put (static_cast<std::uint8_t> (poly.vertices.size ()));
         for (const auto idx : poly.vertices)
           out.put (static_cast<std::int32_t> (idx));
       }
-      std::ofstream file (path, std::ios::binary | std::ios::trunc);
-      file.write (out.bytes ().data (), static_cast<std::streamsize> (out.bytes ().size ()));
-      file.close ();
-      if (!file)
-        PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << path << "'");
+      writeFileAtomically (path, out.bytes ());
     }
   }
 }

@@ -25,8 +25,9 @@ namespace pcl
     /** \brief Write a ScanMesh as binary little-endian PLY: vertices with the fields of toPolygonMesh()
       * (x, y, z, normal_x, normal_y, normal_z, curvature, as float) and triangles as lists of int.
       * It reads back with loadScanMesh() or pcl::io::loadPLYFile. Unlike pcl::io::savePLYFileBinary,
-      * it goes through no PCLPointCloud2 blob: a model is written from one buffer (doc/log.md).
-      * \throw pcl::IOException when the file cannot be written
+      * it goes through no PCLPointCloud2 blob: a model is written from one buffer (doc/log.md), atomically
+      * (writeFileAtomically()): a reader sees the old file or the new one, never part of one.
+      * \throw pcl::IOException when the file cannot be written, or a polygon has over 255 vertices
       * \ingroup io
       */
     void
