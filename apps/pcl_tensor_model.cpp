@@ -355,7 +355,10 @@ namespace
       return pcl::registration::registerTensorViews (model, scene, dims, params);
     };
     if (cache)
+    {
       pairs = pcl::io::cachedPairRegistration (*cache, prepared);
+      registration.setPairScoreCache (pcl::io::cachedPairScores (*cache, prepared));
+    }
     if (!o.pairs_results.empty ())
     {
       std::vector<pcl::io::ViewPairResult> recorded;

@@ -120,6 +120,8 @@ namespace
   {
     std::vector<pcl::registration::TensorView::ConstPtr> views;
     pcl::ObjectDimensions dims;
+    /** Each view's entry name and key, for what the cache keeps per pair. */
+    std::vector<pcl::io::CachedViewReport> entries;
   };
 
   /** From the cache: every listed view's key and extents (for D), and the meshes and tensors of the
@@ -135,6 +137,12 @@ namespace
     });
     LoadedViews loaded;
     loaded.dims = objectDimensions (o, files);
+    for (const auto& f : files)
+    {
+      loaded.entries.emplace_back ();
+      loaded.entries.back ().id = f.id;
+      loaded.entries.back ().key = f.key;
+    }
     std::vector<char> used (n, needed.empty ());
     for (const auto& [a, b] : needed)
       used[a] = used[b] = 1;
@@ -215,7 +223,10 @@ namespace
     const LoadedViews loaded = loadViews (o, {}, argc, argv);
     t.load_ms = timer.toc ();
     timer.tic ();
-    const auto ranked = pcl::registration::ViewPairRanking (loaded.views, o.params.pairwise, o.params.ranking).rank ({}, o.threads);
+    // Scores kept in the cache by earlier rankings of these views (or pcl_tensor_model's) are not computed again.
+    const pcl::io::TensorViewCache cache (o.cache);
+    const auto known = pcl::io::cachedPairScores (cache, loaded.entries) (loaded.dims, o.params.pairwise, o.params.ranking);
+    const auto ranked = pcl::registration::ViewPairRanking (loaded.views, o.params.pairwise, o.params.ranking).rank ({}, o.threads, known);
     const auto kept = bestPartners (ranked, o.rank, o.views.size ());
     t.work_ms = timer.toc ();
     timer.tic ();

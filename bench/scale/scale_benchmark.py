@@ -173,6 +173,7 @@ def cache_runs(args, rows):
     record = {"set": "cache", "views": n, "first_run_s": round(first, 2), "re_run_s": round(again, 2),
               "re_run_ratio": round(again / first, 3), "one_view_added_s": round(added, 2),
               "registered_after_adding": report["registered"],
+              "pairs_scored_after_adding": report["candidate_pairs_scored"], "candidate_pairs": report["candidate_pairs"],
               "one_view_added_stages_s": {k: round(v / 1000.0, 2) for k, v in report["timings_ms"].items()}}
     rows.append(record)
     print(json.dumps(record), flush=True)

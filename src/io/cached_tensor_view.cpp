@@ -2,6 +2,7 @@
  * pcl_tensor: automatic pairwise registration of range images with tensors.
  */
 #include <pcl/io/cached_tensor_view.h>
+#include <pcl/io/pair_score_cache.h>
 #include <pcl/common/tensor_exceptions.h>
 #include "../common/parallel_for.h"
 
@@ -198,6 +199,29 @@ namespace pcl
         report = pcl::registration::registerTensorViews (model_view, scene_view, dims, params);
         cache.savePair (views[model].id, views[scene].id, key, report);
         return report;
+      };
+    }
+
+    pcl::registration::ViewPairScoreCache
+    cachedPairScores (const TensorViewCache& cache, const std::vector<CachedViewReport>& views)
+    {
+      return [&cache, views] (const ObjectDimensions& dims, const pcl::registration::TensorRegistrationParams& params,
+                              const pcl::registration::ViewPairRankingParams& ranking) {
+        const auto known = std::make_shared<PairScoreCache> (cache);
+        const std::uint64_t settings = hashRankingSettings (dims, params, ranking);
+        const auto key = [views, settings] (int a, int b) { return pairScoreKey (views.at (a).key, views.at (b).key, settings); };
+        pcl::registration::ViewPairScoreMemo memo;
+        memo.find = [known, key] (int a, int b, double& score) { return known->find (key (a, b), score); };
+        memo.keep = [known, key] (const std::vector<pcl::registration::ViewPairCandidate>& pairs) {
+          if (pairs.empty ())
+            return;
+          std::vector<std::pair<TensorViewCacheKey, double>> scores;
+          scores.reserve (pairs.size ());
+          for (const auto& p : pairs)
+            scores.emplace_back (key (p.first, p.second), p.score);
+          known->keep (scores);
+        };
+        return memo;
       };
     }
   }

@@ -54,7 +54,8 @@ namespace pcl
       if (!isValidViewId (view_id))
         PCL_TENSOR_THROW (pcl::BadArgumentException, "'" << view_id << "' cannot name a cache entry (see isValidViewId)");
       const char* suffix = kind == CacheEntryKind::MESHES ? ".meshes.tvc" : kind == CacheEntryKind::TENSORS ? ".tensors.tvc"
-                         : kind == CacheEntryKind::PAIR ? ".pair.tvc" : ".run.tvc";
+                         : kind == CacheEntryKind::PAIR ? ".pair.tvc" : kind == CacheEntryKind::RUN ? ".run.tvc"
+                         : ".scores.tvc";
       return (std::filesystem::path (dir_) / (view_id + suffix)).string ();
     }
 

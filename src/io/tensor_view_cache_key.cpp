@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <utility>
 
 namespace pcl
 {
@@ -100,6 +101,32 @@ namespace pcl
           .add (v.free_space_distance).add (v.free_space_fraction).add (v.empty_space_margin);
       key.preparation = hash.digest ();
       return key;
+    }
+
+    std::uint64_t
+    hashRankingSettings (const ObjectDimensions& dims, const pcl::registration::TensorRegistrationParams& params,
+                         const pcl::registration::ViewPairRankingParams& ranking)
+    {
+      static_assert (sizeof (pcl::registration::ViewPairRankingParams) == 24,
+                     "a field was added to ViewPairRankingParams: add it to hashRankingSettings () too");
+      // Raise when ViewPairRanking scores differently under the same settings.
+      constexpr int kRankingRevision = 1;
+      ContentHash hash = taggedHash ("ranking");
+      hash.add (kRankingRevision).add (dims.D[0]).add (dims.D[1]).add (dims.D[2]).add (hashTensorParameters (params));
+      hash.add (params.overlap_threshold).add (params.correlation_threshold).add (params.theta_bin_width);
+      hash.add (ranking.sample_tensors).add (ranking.agreement_degrees).add (ranking.agreement_distance);
+      return hash.digest ();
+    }
+
+    TensorViewCacheKey
+    pairScoreKey (const TensorViewCacheKey& a, const TensorViewCacheKey& b, std::uint64_t ranking_settings)
+    {
+      const bool in_order = std::make_pair (a.source, a.preparation) < std::make_pair (b.source, b.preparation);
+      const TensorViewCacheKey& first = in_order ? a : b;
+      const TensorViewCacheKey& second = in_order ? b : a;
+      ContentHash pair = taggedHash ("pair score");
+      pair.add (first.source).add (first.preparation).add (second.source).add (second.preparation);
+      return {pair.digest (), ranking_settings};
     }
 
     std::string

@@ -559,7 +559,7 @@ namespace pcl
         const ViewPairRegistration registration = pair_registration_ ? pair_registration_ :
             [] (int, int, const TensorView::ConstPtr& model, const TensorView::ConstPtr& scene, const ObjectDimensions& dims,
                 const TensorRegistrationParams& params) { return registerTensorViews (model, scene, dims, params); };
-        detail::registerRankedViews (params_, pairs_, tensors, registration, threads_, progress_, result);
+        detail::registerRankedViews (params_, pairs_, tensors, registration, pair_scores_, threads_, progress_, result);
       }
       result.timings.pairwise_ms = watch.getTime ();
 

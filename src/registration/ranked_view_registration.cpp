@@ -88,10 +88,16 @@ namespace pcl
             }
 
             void
-            run (const ViewPairs& allowed, const MultiviewProgress& progress)
+            run (const ViewPairs& allowed, const ViewPairScoreCache& scores, const MultiviewProgress& progress)
             {
               pcl::StopWatch ranking;
-              result_.candidates = ViewPairRanking (views_, params_.pairwise, params_.ranking).rank (allowed, threads_);
+              ViewPairScoreMemo known = scores ? scores (result_.dimensions, params_.pairwise, params_.ranking) : ViewPairScoreMemo ();
+              known.keep = [this, keep = known.keep] (const std::vector<ViewPairCandidate>& scored) {
+                result_.candidates_scored = scored.size ();
+                if (keep)
+                  keep (scored);
+              };
+              result_.candidates = ViewPairRanking (views_, params_.pairwise, params_.ranking).rank (allowed, threads_, known);
               result_.timings.ranking_ms = ranking.getTime ();
               TensorRegistrationParams quick = params_.pairwise;
               const int budget = params_.first_pass_hypotheses;
@@ -337,9 +343,10 @@ namespace pcl
       void
       registerRankedViews (const MultiviewRegistrationParams& params, const ViewPairs& allowed,
                            const std::vector<TensorView::ConstPtr>& views, const ViewPairRegistration& registration,
-                           unsigned threads, const MultiviewProgress& progress, MultiviewRegistrationResult& result)
+                           const ViewPairScoreCache& scores, unsigned threads, const MultiviewProgress& progress,
+                           MultiviewRegistrationResult& result)
       {
-        RankedRegistration (params, views, registration, threads, result).run (allowed, progress);
+        RankedRegistration (params, views, registration, threads, result).run (allowed, scores, progress);
       }
     }
   }

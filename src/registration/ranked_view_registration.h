@@ -15,11 +15,13 @@ namespace pcl
         * then registered best first while it joins two groups, each join checked by global
         * verification over both groups (Section 4.2). Fills the views' status (registered, reference,
         * component, pairwise poses), the joins, the candidates and the components of \a result.
-        * \param[in] views each view with its tensors (null: unusable) */
+        * \param[in] views each view with its tensors (null: unusable)
+        * \param[in] scores scores known from before (may be empty) */
       void
       registerRankedViews (const MultiviewRegistrationParams& params, const ViewPairs& allowed,
                            const std::vector<TensorView::ConstPtr>& views, const ViewPairRegistration& registration,
-                           unsigned threads, const MultiviewProgress& progress, MultiviewRegistrationResult& result);
+                           const ViewPairScoreCache& scores, unsigned threads, const MultiviewProgress& progress,
+                           MultiviewRegistrationResult& result);
     }
   }
 }

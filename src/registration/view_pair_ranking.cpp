@@ -153,7 +153,7 @@ namespace pcl
     }
 
     std::vector<ViewPairCandidate>
-    ViewPairRanking::rank (const std::vector<std::pair<int, int>>& allowed, unsigned threads) const
+    ViewPairRanking::rank (const std::vector<std::pair<int, int>>& allowed, unsigned threads, const ViewPairScoreMemo& known) const
     {
       std::vector<ViewPairCandidate> pairs;
       const auto add = [&] (int a, int b) {
@@ -174,7 +174,22 @@ namespace pcl
       pairs.erase (std::unique (pairs.begin (), pairs.end (), [] (const auto& x, const auto& y) {
         return x.first == y.first && x.second == y.second;
       }), pairs.end ());
-      pcl::detail::parallelFor (pairs.size (), threads, [&] (std::size_t k) { pairs[k].score = score (pairs[k].first, pairs[k].second); });
+      std::vector<std::size_t> unknown;
+      for (std::size_t k = 0; k < pairs.size (); ++k)
+        if (!known.find || !known.find (pairs[k].first, pairs[k].second, pairs[k].score))
+          unknown.push_back (k);
+      pcl::detail::parallelFor (unknown.size (), threads, [&] (std::size_t u) {
+        auto& pair = pairs[unknown[u]];
+        pair.score = score (pair.first, pair.second);
+      });
+      if (known.keep)
+      {
+        std::vector<ViewPairCandidate> scored;
+        scored.reserve (unknown.size ());
+        for (const std::size_t k : unknown)
+          scored.push_back (pairs[k]);
+        known.keep (scored);
+      }
       std::stable_sort (pairs.begin (), pairs.end (), [] (const auto& x, const auto& y) { return x.score > y.score; });
       return pairs;
     }

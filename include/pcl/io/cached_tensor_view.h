@@ -88,5 +88,13 @@ namespace pcl
       * the order of the views; \a cache must outlive the returned function. */
     pcl::registration::ViewPairRegistration
     cachedPairRegistration (const TensorViewCache& cache, const std::vector<CachedViewReport>& views);
+
+    /** \brief Ranking scores answered from \a cache's PairScoreCache when it holds one for both views' keys
+      * and the settings (pairScoreKey()), the others computed and kept there, for
+      * MultiviewTensorRegistration::setPairScoreCache(): a run with one view added scores only that view's
+      * pairs. \a views: prepareMultiviewInputs()' reports, in the order of the views; \a cache must
+      * outlive the returned function. */
+    pcl::registration::ViewPairScoreCache
+    cachedPairScores (const TensorViewCache& cache, const std::vector<CachedViewReport>& views);
   }
 }

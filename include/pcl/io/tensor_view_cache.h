@@ -36,7 +36,9 @@ namespace pcl
       /** A pairwise registration of two views (TensorRegistrationReport), keyed by pairCacheKey(). */
       PAIR = 3,
       /** A whole run of pcl_tensor_model (ModelRunRecord), keyed by modelRunKey(). */
-      RUN = 4
+      RUN = 4,
+      /** Ranking scores of view pairs (PairScoreCache), each keyed by pairScoreKey(). */
+      SCORES = 5
     };
 
     /** \brief What a lookup found. Only VALID gives data; any other state leaves the output untouched.

@@ -9,6 +9,7 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 #include <pcl/registration/tensor_registration_params.h>
+#include <pcl/registration/view_pair_ranking.h>
 #include <pcl/surface/scan_preparation.h>
 
 #include <cstdint>
@@ -74,6 +75,22 @@ namespace pcl
     TensorViewCacheKey
     pairCacheKey (const TensorViewCacheKey& model, const TensorViewCacheKey& scene, const ObjectDimensions& dims,
                   const pcl::registration::TensorRegistrationParams& params);
+
+    /** \brief A hash of everything a ranking score (ViewPairRanking::score()) depends on besides the two
+      * views: D, the tensor settings (hashTensorParameters()), the matching thresholds t_r and t_c, the
+      * theta_d bin width and \a ranking.
+      * \ingroup io
+      */
+    std::uint64_t
+    hashRankingSettings (const ObjectDimensions& dims, const pcl::registration::TensorRegistrationParams& params,
+                         const pcl::registration::ViewPairRankingParams& ranking);
+
+    /** \brief The key of a ranking score: both views' keys, taken in an order of their own (the score is
+      * symmetric, and a view's index changes from run to run), and \a ranking_settings (hashRankingSettings()).
+      * \ingroup io
+      */
+    TensorViewCacheKey
+    pairScoreKey (const TensorViewCacheKey& a, const TensorViewCacheKey& b, std::uint64_t ranking_settings);
 
     /** \brief A file-name-safe id for the view in file \a path: its stem (characters other than
       * letters, digits, '-', '_' and '.' replaced by '_'; at most 64 of them), '-', and 16 hex digits of

@@ -65,6 +65,12 @@ namespace pcl
         int model, int scene, const TensorView::ConstPtr& model_view, const TensorView::ConstPtr& scene_view,
         const ObjectDimensions& dims, const TensorRegistrationParams& params)>;
 
+    /** \brief The scores RANKED search may take as known (ViewPairScoreMemo) when its views' tensors were
+      * computed with \a dims and are matched with \a params and \a ranking: an application may keep them
+      * in a cache. Called once per registration, before the pairs are ranked. */
+    using ViewPairScoreCache = std::function<ViewPairScoreMemo (
+        const ObjectDimensions& dims, const TensorRegistrationParams& params, const ViewPairRankingParams& ranking)>;
+
     /** \brief Progress: \a done of \a total steps of \a stage are finished (views, or global iterations). */
     using MultiviewProgress = std::function<void (MultiviewStage stage, std::size_t done, std::size_t total)>;
 
@@ -178,6 +184,8 @@ namespace pcl
       ViewPairs joins;
       /** RANKED: every pair considered, best first, and the pairs fully registered, in order. */
       std::vector<ViewPairCandidate> candidates;
+      /** RANKED: the candidates scored here, the others' scores being known (setPairScoreCache()). */
+      std::size_t candidates_scored = 0;
       std::vector<ViewPairAttempt> attempts;
       MultiviewIcpResult global;    ///< what the global step did (poses: also in views[i].pose)
       struct Timings
@@ -240,6 +248,10 @@ namespace pcl
           * parameters). */
         void setPairRegistration (const ViewPairRegistration& registration) { pair_registration_ = registration; }
 
+        /** \brief Where RANKED search finds the scores of pairs ranked before (default: none; every pair
+          * is scored). */
+        void setPairScoreCache (const ViewPairScoreCache& scores) { pair_scores_ = scores; }
+
         /** \brief Register the views.
           * \throw pcl::BadArgumentException on a pair out of range or bad parameters; a view that
           * cannot be used (too few points) is reported in its status, not thrown
@@ -252,6 +264,7 @@ namespace pcl
         MultiviewProgress progress_;
         unsigned threads_{0};
         ViewPairRegistration pair_registration_;
+        ViewPairScoreCache pair_scores_;
     };
   }
 }

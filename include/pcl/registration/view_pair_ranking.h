@@ -6,6 +6,7 @@
 #include <pcl/registration/tensor_registration_params.h>
 #include <pcl/registration/tensor_view.h>
 
+#include <functional>
 #include <vector>
 
 namespace pcl
@@ -36,6 +37,18 @@ namespace pcl
       double score = 0.0;
     };
 
+    /** \brief Scores of view pairs known from before, e.g. kept in a cache across runs, so that a run with
+      * views added scores only the new pairs. Either function may be empty. Both are called from the
+      * thread that calls ViewPairRanking::rank().
+      */
+    struct ViewPairScoreMemo
+    {
+      /** Sets \a score of views \a a < \a b and returns true when it is known. */
+      std::function<bool (int a, int b, double& score)> find;
+      /** Told, once per ranking, the pairs scored because find() did not know them. */
+      std::function<void (const std::vector<ViewPairCandidate>& scored)> keep;
+    };
+
     /** \brief Which pairs of many unordered views are worth a full registration, from their tensors
       * alone (beyond the paper, which registers views in a known order): a sample of each view's
       * tensors is matched (Eq. 5 and 6, thresholds t_r and t_c, the theta_d index of Section 4)
@@ -59,9 +72,12 @@ namespace pcl
         double score (int a, int b) const;
 
         /** \brief Every pair of usable views, or only \a allowed when it is not empty, best first
-          * (ties: lower indices first), scored on \a threads threads (0: every core). */
+          * (ties: lower indices first), scored on \a threads threads (0: every core), save those that
+          * \a known already holds: a score it gives must be score()'s, bit for bit, for the ranking
+          * to be the same. */
         std::vector<ViewPairCandidate>
-        rank (const std::vector<std::pair<int, int>>& allowed = {}, unsigned threads = 0) const;
+        rank (const std::vector<std::pair<int, int>>& allowed = {}, unsigned threads = 0,
+              const ViewPairScoreMemo& known = {}) const;
 
       private:
         struct IndexedView;
