@@ -39,13 +39,7 @@ namespace
       fs::path dir_;
   };
 
-  std::uint64_t
-  bits (double value)
-  {
-    std::uint64_t b;
-    std::memcpy (&b, &value, sizeof b);
-    return b;
-  }
+  using pcl_tensor_test::bits;
 
   /** Six neighbouring views 30 degrees apart on a turntable around the example object, 300 x 300. */
   const std::vector<pcl::SyntheticView>&

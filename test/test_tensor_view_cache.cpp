@@ -83,21 +83,7 @@ namespace
 
   const TensorViewCacheKey kKey{0x1234567890abcdefull, 0xfedcba0987654321ull};
 
-  std::uint32_t
-  bits (float f)
-  {
-    std::uint32_t b;
-    std::memcpy (&b, &f, sizeof (b));
-    return b;
-  }
-
-  std::uint64_t
-  bits (double d)
-  {
-    std::uint64_t b;
-    std::memcpy (&b, &d, sizeof (b));
-    return b;
-  }
+  using pcl_tensor_test::bits;
 
   template <typename Matrix> void
   expectSameBits (const Matrix& expected, const Matrix& actual, const char* what)

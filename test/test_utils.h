@@ -8,6 +8,8 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
@@ -29,6 +31,22 @@ namespace pcl_tensor_test
 
   /** \brief The median of \a values (the upper one of an even count); \a values must not be empty. */
   double median (std::vector<double> values);
+
+  /** \brief The bit pattern of \a value, for comparisons that must be exact (NaN and -0 included). */
+  inline std::uint32_t bits (float value)
+  {
+    std::uint32_t b;
+    std::memcpy (&b, &value, sizeof b);
+    return b;
+  }
+
+  /** \brief The bit pattern of \a value, for comparisons that must be exact (NaN and -0 included). */
+  inline std::uint64_t bits (double value)
+  {
+    std::uint64_t b;
+    std::memcpy (&b, &value, sizeof b);
+    return b;
+  }
 
   /** \brief Round \a value to a multiple of \a step (a power of two keeps it exact in float). */
   inline float quantize (float value, double step)
