@@ -8,6 +8,10 @@
 #include <cmath>
 #include <limits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace pcl
 {
   BoundedNearestSearch::BoundedNearestSearch (float cell_size) : wanted_cell_ (cell_size), cell_ (cell_size)
@@ -21,7 +25,10 @@ namespace pcl
   {
     if (points.size () >= static_cast<std::size_t> (std::numeric_limits<std::int32_t>::max ()))
       PCL_TENSOR_THROW (BadArgumentException, "BoundedNearestSearch: " << points.size () << " points are too many");
-    entries_.clear ();
+    x_.clear ();
+    y_.clear ();
+    z_.clear ();
+    index_.clear ();
     cell_start_.clear ();
     dims_[0] = dims_[1] = dims_[2] = 0;
     Eigen::Vector3f lo = Eigen::Vector3f::Constant (std::numeric_limits<float>::max ()), hi = -lo;
@@ -74,29 +81,39 @@ namespace pcl
         ++cell_start_[(cell_of[i] = static_cast<std::uint32_t> (cellOf (points[i]))) + 1];
     for (std::size_t c = 0; c < n_cells; ++c)
       cell_start_[c + 1] += cell_start_[c];
-    entries_.resize (finite);
+    x_.resize (finite);
+    y_.resize (finite);
+    z_.resize (finite);
+    index_.resize (finite);
     std::vector<std::uint32_t> fill (cell_start_.begin (), cell_start_.end () - 1);
     for (std::size_t i = 0; i < points.size (); ++i)
       if (points[i].allFinite ())
-        entries_[fill[cell_of[i]]++] = {points[i].x (), points[i].y (), points[i].z (), static_cast<std::int32_t> (i)};
+      {
+        const std::uint32_t k = fill[cell_of[i]]++;
+        x_[k] = points[i].x ();
+        y_[k] = points[i].y ();
+        z_[k] = points[i].z ();
+        index_[k] = static_cast<std::int32_t> (i);
+      }
   }
 
   bool
   BoundedNearestSearch::cellRange (const Eigen::Vector3f& query, float radius, int lo[3], int hi[3]) const
   {
-    if (entries_.empty () || !query.allFinite () || !(radius >= 0.0f))
+    if (index_.empty () || !query.allFinite () || !(radius >= 0.0f))
       return false;
     // A point that the float distance test accepts may lie a rounding error beyond the radius.
     const double reach = static_cast<double> (radius) * (1.0 + 1e-5) + slack_;
     for (int k = 0; k < 3; ++k)
     {
-      // In double and clamped before the cast: a far query must not overflow the int.
-      const double a = std::floor ((static_cast<double> (query[k]) - reach - origin_[k]) * inv_cell_);
-      const double b = std::floor ((static_cast<double> (query[k]) + reach - origin_[k]) * inv_cell_);
+      // In double, compared before any cast: a far query must not overflow the int. Inside [0, dims)
+      // truncation is the floor, so no floor() call is needed.
+      const double a = (static_cast<double> (query[k]) - reach - origin_[k]) * inv_cell_;
+      const double b = (static_cast<double> (query[k]) + reach - origin_[k]) * inv_cell_;
       if (b < 0.0 || a >= dims_[k])
         return false;
-      lo[k] = static_cast<int> (std::max (a, 0.0));
-      hi[k] = static_cast<int> (std::min (b, static_cast<double> (dims_[k] - 1)));
+      lo[k] = a > 0.0 ? static_cast<int> (a) : 0;
+      hi[k] = b < dims_[k] - 1 ? static_cast<int> (b) : dims_[k] - 1;
     }
     return true;
   }
@@ -111,9 +128,7 @@ namespace pcl
       for (int y = lo[1]; y <= hi[1]; ++y)
       {
         const std::size_t row = (static_cast<std::size_t> (z) * dims_[1] + y) * dims_[0];
-        const Entry* first = entries_.data () + cell_start_[row + lo[0]];
-        const Entry* last = entries_.data () + cell_start_[row + hi[0] + 1];
-        if (visit (first, last))
+        if (visit (static_cast<std::size_t> (cell_start_[row + lo[0]]), static_cast<std::size_t> (cell_start_[row + hi[0] + 1])))
           return true;
       }
     return false;
@@ -136,25 +151,80 @@ namespace pcl
     return nearestWithin (query, radius, sqr_distance);
   }
 
+  /** Distances from one query to the stored points: the scalar one, and four at a time where SSE2 is
+    * there, lane for lane the same float operations in the same order (so the same bits). */
+  class BoundedNearestSearch::Distances
+  {
+    public:
+      Distances (const BoundedNearestSearch& search, const Eigen::Vector3f& query)
+        : x_ (search.x_.data ()), y_ (search.y_.data ()), z_ (search.z_.data ()),
+          qx_ (query.x ()), qy_ (query.y ()), qz_ (query.z ())
+      {}
+
+      float
+      at (std::size_t k) const
+      {
+        const float dx = x_[k] - qx_, dy = y_[k] - qy_, dz = z_[k] - qz_;
+        return dx * dx + dy * dy + dz * dz;
+      }
+
+      /** Calls \a visit (k, d2) for each stored point k in [first, last) in order whose squared distance
+        * d2 is at most \a bound (); \a bound is read again after every call, and a true return stops. */
+      template <typename Bound, typename Visit> bool
+      scan (std::size_t first, std::size_t last, Bound&& bound, Visit&& visit) const
+      {
+        std::size_t k = first;
+#if defined(__SSE2__)
+        const __m128 qx = _mm_set1_ps (qx_), qy = _mm_set1_ps (qy_), qz = _mm_set1_ps (qz_);
+        for (; k + 4 <= last; k += 4)
+        {
+          const __m128 dx = _mm_sub_ps (_mm_loadu_ps (x_ + k), qx);
+          const __m128 dy = _mm_sub_ps (_mm_loadu_ps (y_ + k), qy);
+          const __m128 dz = _mm_sub_ps (_mm_loadu_ps (z_ + k), qz);
+          const __m128 d2 = _mm_add_ps (_mm_add_ps (_mm_mul_ps (dx, dx), _mm_mul_ps (dy, dy)), _mm_mul_ps (dz, dz));
+          int mask = _mm_movemask_ps (_mm_cmple_ps (d2, _mm_set1_ps (bound ())));
+          if (mask == 0)
+            continue;
+          alignas (16) float lanes[4];
+          _mm_store_ps (lanes, d2);
+          for (; mask != 0; mask &= mask - 1)
+          {
+            const int lane = __builtin_ctz (static_cast<unsigned> (mask));
+            if (lanes[lane] <= bound () && visit (k + lane, lanes[lane]))
+              return true;
+          }
+        }
+#endif
+        for (; k < last; ++k)
+        {
+          const float d2 = at (k);
+          if (d2 <= bound () && visit (k, d2))
+            return true;
+        }
+        return false;
+      }
+
+    private:
+      const float *x_, *y_, *z_;
+      float qx_, qy_, qz_;
+  };
+
   int
   BoundedNearestSearch::nearestWithin (const Eigen::Vector3f& query, float radius, float& sqr_distance) const
   {
-    const float qx = query.x (), qy = query.y (), qz = query.z ();
+    const Distances distances (*this, query);
     float best = radius * radius;
     std::int32_t best_index = -1;
-    forEachRow (query, radius, [&] (const Entry* first, const Entry* last) {
-      for (const Entry* e = first; e != last; ++e)
-      {
-        const float dx = e->x - qx, dy = e->y - qy, dz = e->z - qz;
-        const float d2 = dx * dx + dy * dy + dz * dz;
+    forEachRow (query, radius, [&] (std::size_t first, std::size_t last) {
+      return distances.scan (first, last, [&] { return best; }, [&] (std::size_t k, float d2) {
         // Rows are not in index order: a tie goes to the lower index explicitly.
-        if (d2 < best || (d2 == best && (best_index < 0 || e->index < best_index)))
+        if (d2 < best || best_index < 0 || index_[k] < best_index)
         {
           best = d2;
-          best_index = e->index;
+          best_index = index_[k];
         }
-      }
-      return false;
+        return false;
+      });
     });
     if (best_index >= 0)
       sqr_distance = best;
@@ -171,22 +241,15 @@ namespace pcl
   bool
   BoundedNearestSearch::anyWithin (const Eigen::Vector3f& query, float radius, std::int32_t& hint) const
   {
-    const float qx = query.x (), qy = query.y (), qz = query.z ();
+    const Distances distances (*this, query);
     const float r2 = radius * radius;
-    const auto within = [&] (const Entry& e) {
-      const float dx = e.x - qx, dy = e.y - qy, dz = e.z - qz;
-      return dx * dx + dy * dy + dz * dz <= r2;
-    };
-    if (hint >= 0 && static_cast<std::size_t> (hint) < entries_.size () && within (entries_[hint]))
+    if (hint >= 0 && static_cast<std::size_t> (hint) < index_.size () && distances.at (hint) <= r2)
       return true;
-    return forEachRow (query, radius, [&] (const Entry* first, const Entry* last) {
-      for (const Entry* e = first; e != last; ++e)
-        if (within (*e))
-        {
-          hint = static_cast<std::int32_t> (e - entries_.data ());
-          return true;
-        }
-      return false;
+    return forEachRow (query, radius, [&] (std::size_t first, std::size_t last) {
+      return distances.scan (first, last, [r2] { return r2; }, [&] (std::size_t k, float) {
+        hint = static_cast<std::int32_t> (k);
+        return true;
+      });
     });
   }
 
@@ -194,16 +257,13 @@ namespace pcl
   BoundedNearestSearch::radiusSearch (const Eigen::Vector3f& query, float radius, std::vector<int>& indices) const
   {
     indices.clear ();
-    const float qx = query.x (), qy = query.y (), qz = query.z ();
+    const Distances distances (*this, query);
     const float r2 = radius * radius;
-    forEachRow (query, radius, [&] (const Entry* first, const Entry* last) {
-      for (const Entry* e = first; e != last; ++e)
-      {
-        const float dx = e->x - qx, dy = e->y - qy, dz = e->z - qz;
-        if (dx * dx + dy * dy + dz * dz <= r2)
-          indices.push_back (e->index);
-      }
-      return false;
+    forEachRow (query, radius, [&] (std::size_t first, std::size_t last) {
+      return distances.scan (first, last, [r2] { return r2; }, [&] (std::size_t k, float) {
+        indices.push_back (index_[k]);
+        return false;
+      });
     });
     std::sort (indices.begin (), indices.end ());
     return indices.size ();

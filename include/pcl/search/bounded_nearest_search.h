@@ -23,7 +23,8 @@ namespace pcl
     * of points at exactly the same distance the one with the lower index is returned.
     *
     * Points are sorted by cell (a counting sort over a dense grid, x fastest), so the cells of one grid
-    * row that a ball meets hold one contiguous run of points. Any radius can be asked; a query scans
+    * row that a ball meets hold one contiguous run of points, scanned four at a time with SSE2 where
+    * the compiler has it (each lane's distance is the scalar one, bit for bit). Any radius can be asked; a query scans
     * about (2 r + cell)^2 / d_res^2 points of a surface, so the cell should be near the radii asked;
     * nearest() asks half a cell first and the whole radius only when that finds nothing.
     * The dense grid has at most max(4096, 4 n) cells for n points: when the bounding box needs more,
@@ -80,18 +81,13 @@ namespace pcl
       std::size_t radiusSearch (const Eigen::Vector3f& query, float radius, std::vector<int>& indices) const;
 
       /** \brief Number of points indexed (the finite ones). */
-      std::size_t size () const { return entries_.size (); }
+      std::size_t size () const { return index_.size (); }
 
       /** \brief The cell edge in use: the one asked for, or larger when the grid had to be bounded. */
       float getCellSize () const { return cell_; }
 
     private:
-      /** A point with its index, 16 bytes, stored in cell order. */
-      struct Entry
-      {
-        float x, y, z;
-        std::int32_t index;
-      };
+      class Distances;
 
       /** Cell ranges [lo, hi] met by the ball; false when it misses the grid or is not finite. */
       bool cellRange (const Eigen::Vector3f& query, float radius, int lo[3], int hi[3]) const;
@@ -99,14 +95,17 @@ namespace pcl
       /** nearest() by one scan of the cells within \a radius. */
       int nearestWithin (const Eigen::Vector3f& query, float radius, float& sqr_distance) const;
 
-      /** Calls \a visit (first, last) for each row of cells the ball meets; stops when it returns true. */
+      /** Calls \a visit (first, last), a range of stored positions, for each row of cells the ball
+        * meets; stops when it returns true. */
       template <typename Visit> bool forEachRow (const Eigen::Vector3f& query, float radius, Visit&& visit) const;
 
       float wanted_cell_, cell_, inv_cell_ = 1.0f;
       float slack_ = 0.0f;  ///< a few float roundings of the largest coordinate
       Eigen::Vector3f origin_ = Eigen::Vector3f::Zero ();
       int dims_[3] = {0, 0, 0};
-      std::vector<std::uint32_t> cell_start_;  ///< CSR: entries of cell c are [cell_start_[c], cell_start_[c + 1])
-      std::vector<Entry> entries_;
+      std::vector<std::uint32_t> cell_start_;  ///< CSR: positions of cell c are [cell_start_[c], cell_start_[c + 1])
+      // The points in cell order, one array per coordinate so that four are compared at once.
+      std::vector<float> x_, y_, z_;
+      std::vector<std::int32_t> index_;        ///< each stored point's index in the input
   };
 }
