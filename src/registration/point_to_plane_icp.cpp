@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace pcl
@@ -27,7 +28,8 @@ namespace pcl
 
       Step
       solveStep (const pcl::PointCloud<pcl::PointNormal>& source, std::size_t stride, const pcl::PointCloud<pcl::PointNormal>& target,
-                 const pcl::BoundedNearestSearch& search, const Eigen::Matrix4f& t, double max_distance)
+                 const pcl::BoundedNearestSearch& search, const Eigen::Matrix4f& t, double max_distance,
+                 std::vector<std::int32_t>& hints)
       {
         Eigen::Matrix<double, 6, 6> a = Eigen::Matrix<double, 6, 6>::Zero ();
         Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero ();
@@ -39,7 +41,7 @@ namespace pcl
           const auto& p = source[i];
           const Eigen::Vector3f q = (t * p.getVector4fMap ()).head<3> ();
           float d2;
-          const int index = search.nearest (q, radius, d2);
+          const int index = search.nearest (q, radius, d2, hints[i]);
           if (index < 0)
             continue;
           const auto& m = target[index];
@@ -69,17 +71,18 @@ namespace pcl
 
     namespace
     {
-      /** One stage: iterate at one pairing distance from \a result's pose, updating it in place. */
+      /** One stage: iterate at one pairing distance from \a result's pose, updating it in place;
+        * \a hints: each source point's last partner, so that the next search starts from it. */
       void
       iterate (const pcl::PointCloud<pcl::PointNormal>& source, std::size_t stride, const pcl::PointCloud<pcl::PointNormal>& target,
                const pcl::BoundedNearestSearch& search, const PointToPlaneIcpParams& params, double max_distance,
-               double tolerance, PointToPlaneIcpResult& result)
+               double tolerance, std::vector<std::int32_t>& hints, PointToPlaneIcpResult& result)
       {
         // Pair counts are scaled to the whole source, so that a subsample whose points all pair counts as all of them.
         const std::size_t sampled = (source.size () + stride - 1) / stride;
         for (int it = 0; it < params.max_iterations; ++it)
         {
-          const Step step = solveStep (source, stride, target, search, result.transform, max_distance);
+          const Step step = solveStep (source, stride, target, search, result.transform, max_distance, hints);
           result.pairs = sampled ? step.pairs * source.size () / sampled : 0;
           result.rms = step.rms;
           if (!step.solved)
@@ -112,6 +115,7 @@ namespace pcl
       result.transform = initial;
       // The pairing distances of the stages, halving from max_distance down to final_distance.
       std::vector<double> stages{params.max_distance};
+      std::vector<std::int32_t> hints (source.size (), -1);
       while (params.final_distance > 0.0 && stages.back () > params.final_distance)
         stages.push_back (std::max (0.5 * stages.back (), params.final_distance));
       for (std::size_t s = 0; s < stages.size (); ++s)
@@ -127,7 +131,7 @@ namespace pcl
           stride *= static_cast<std::size_t> (params.coarse_stage_step);
         // A subsample too small to solve for six unknowns would end the refinement for nothing.
         stride = std::max<std::size_t> (1, std::min (stride, source.size () / 64));
-        iterate (source, stride, target, search, params, stages[s], last ? 1.0 : params.coarse_stage_tolerance, result);
+        iterate (source, stride, target, search, params, stages[s], last ? 1.0 : params.coarse_stage_tolerance, hints, result);
       }
       return result;
     }

@@ -134,8 +134,8 @@ namespace pcl
     return false;
   }
 
-  int
-  BoundedNearestSearch::nearest (const Eigen::Vector3f& query, float radius, float& sqr_distance) const
+  std::int32_t
+  BoundedNearestSearch::nearestPosition (const Eigen::Vector3f& query, float radius, float& sqr_distance) const
   {
     // A point near the surface has its nearest neighbour within half a cell: search that small ball
     // first. Whatever it finds is the exact answer (every nearer point lies in it too, ties included),
@@ -144,11 +144,18 @@ namespace pcl
     const float first = 0.5f * cell_;
     if (radius > 2.0f * first)
     {
-      const int index = nearestWithin (query, first, sqr_distance);
-      if (index >= 0)
-        return index;
+      const std::int32_t k = nearestWithin (query, first, first * first, sqr_distance);
+      if (k >= 0)
+        return k;
     }
-    return nearestWithin (query, radius, sqr_distance);
+    return nearestWithin (query, radius, radius * radius, sqr_distance);
+  }
+
+  int
+  BoundedNearestSearch::nearest (const Eigen::Vector3f& query, float radius, float& sqr_distance) const
+  {
+    const std::int32_t k = nearestPosition (query, radius, sqr_distance);
+    return k >= 0 ? index_[k] : -1;
   }
 
   /** Distances from one query to the stored points: the scalar one, and four at a time where SSE2 is
@@ -210,25 +217,48 @@ namespace pcl
   };
 
   int
-  BoundedNearestSearch::nearestWithin (const Eigen::Vector3f& query, float radius, float& sqr_distance) const
+  BoundedNearestSearch::nearest (const Eigen::Vector3f& query, float radius, float& sqr_distance,
+                                 std::int32_t& hint) const
+  {
+    if (hint >= 0 && static_cast<std::size_t> (hint) < index_.size () && query.allFinite ())
+    {
+      // The last answer is a point within sqrt (bound): the nearest one lies in that ball, ties too.
+      const float bound = Distances (*this, query).at (static_cast<std::size_t> (hint));
+      if (bound <= radius * radius)
+      {
+        const std::int32_t k = nearestWithin (query, std::sqrt (bound), bound, sqr_distance);
+        if (k >= 0)
+        {
+          hint = k;
+          return index_[k];
+        }
+      }
+    }
+    hint = nearestPosition (query, radius, sqr_distance);
+    return hint >= 0 ? index_[hint] : -1;
+  }
+
+  std::int32_t
+  BoundedNearestSearch::nearestWithin (const Eigen::Vector3f& query, float radius, float bound,
+                                       float& sqr_distance) const
   {
     const Distances distances (*this, query);
-    float best = radius * radius;
-    std::int32_t best_index = -1;
+    float best = bound;
+    std::int32_t best_k = -1;
     forEachRow (query, radius, [&] (std::size_t first, std::size_t last) {
       return distances.scan (first, last, [&] { return best; }, [&] (std::size_t k, float d2) {
         // Rows are not in index order: a tie goes to the lower index explicitly.
-        if (d2 < best || best_index < 0 || index_[k] < best_index)
+        if (d2 < best || best_k < 0 || index_[k] < index_[best_k])
         {
           best = d2;
-          best_index = index_[k];
+          best_k = static_cast<std::int32_t> (k);
         }
         return false;
       });
     });
-    if (best_index >= 0)
+    if (best_k >= 0)
       sqr_distance = best;
-    return best_index;
+    return best_k;
   }
 
   bool

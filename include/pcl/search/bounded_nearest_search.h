@@ -66,6 +66,12 @@ namespace pcl
         */
       int nearest (const Eigen::Vector3f& query, float radius, float& sqr_distance) const;
 
+      /** \brief nearest() for a query asked again after a small move, as ICP asks each of its points once
+        * per iteration: the point found last time (\a hint, in and out; -1 to start) bounds the search to
+        * the ball through it, which holds the answer and is mostly one cell. The answer is the same as
+        * nearest()'s. */
+      int nearest (const Eigen::Vector3f& query, float radius, float& sqr_distance, std::int32_t& hint) const;
+
       /** \brief Whether any indexed point lies within \a radius of \a query (stops at the first found). */
       bool anyWithin (const Eigen::Vector3f& query, float radius) const;
 
@@ -92,8 +98,12 @@ namespace pcl
       /** Cell ranges [lo, hi] met by the ball; false when it misses the grid or is not finite. */
       bool cellRange (const Eigen::Vector3f& query, float radius, int lo[3], int hi[3]) const;
 
-      /** nearest() by one scan of the cells within \a radius. */
-      int nearestWithin (const Eigen::Vector3f& query, float radius, float& sqr_distance) const;
+      /** The stored position of the nearest point at a squared distance of at most \a bound, scanning the
+        * cells within \a radius (sqrt (bound) or more), or -1. */
+      std::int32_t nearestWithin (const Eigen::Vector3f& query, float radius, float bound, float& sqr_distance) const;
+
+      /** nearest() as a stored position, or -1. */
+      std::int32_t nearestPosition (const Eigen::Vector3f& query, float radius, float& sqr_distance) const;
 
       /** Calls \a visit (first, last), a range of stored positions, for each row of cells the ball
         * meets; stops when it returns true. */
