@@ -113,6 +113,52 @@ TEST (BoundedNearestSearch, HintedRunsAnswerAsWithout)
   EXPECT_LT (within, 3800u);
 }
 
+// ICP's queries: the same points moved a little each iteration, each starting from its last answer.
+// Ties (duplicated points) and queries that leave the radius are included; every answer is brute force's.
+TEST (BoundedNearestSearch, HintedNearestAnswersAsBruteForce)
+{
+  auto points = wavySheet (20000, 5);
+  for (std::size_t i = 0; i < 2000; ++i)
+    points.push_back (points[7 * i]);  // exact duplicates with higher indices: ties to break
+  const float spacing = 2.0f / std::sqrt (20000.0f);
+  pcl::BoundedNearestSearch search (2.0f * spacing);
+  search.setPoints (points);
+  std::mt19937 rng (11);
+  std::uniform_int_distribution<std::size_t> pick (0, 19999);
+  std::normal_distribution<float> jitter (0.0f, spacing);
+  std::vector<Eigen::Vector3f> queries (1500);
+  for (auto& q : queries)
+    q = points[pick (rng)] + Eigen::Vector3f (jitter (rng), jitter (rng), jitter (rng));
+  std::vector<std::int32_t> hints (queries.size (), -1);
+  const float radius = 3.0f * spacing;
+  std::size_t found = 0, missed = 0, hinted = 0;
+  for (int it = 0; it < 6; ++it)
+  {
+    // A shrinking rigid step: a turn about z and a shift, as a converging ICP makes.
+    const float angle = 0.02f / static_cast<float> (1 << it);
+    const Eigen::Affine3f step = Eigen::Translation3f (0.5f * spacing, -0.3f * spacing, 0.2f * spacing)
+                                 * Eigen::AngleAxisf (angle, Eigen::Vector3f::UnitZ ());
+    for (std::size_t k = 0; k < queries.size (); ++k)
+    {
+      queries[k] = step * queries[k];
+      hinted += hints[k] >= 0 ? 1 : 0;
+      float brute_d2 = 0.0f, d2 = -1.0f;
+      const int expected = bruteNearest (points, queries[k], radius, brute_d2);
+      ASSERT_EQ (search.nearest (queries[k], radius, d2, hints[k]), expected) << "iteration " << it << ", query " << k;
+      if (expected >= 0)
+      {
+        ASSERT_EQ (pcl_tensor_test::bits (d2), pcl_tensor_test::bits (brute_d2)) << "iteration " << it << ", query " << k;
+      }
+      found += expected >= 0 ? 1 : 0;
+      missed += expected < 0 ? 1 : 0;
+    }
+  }
+  // Most searches started from a hint, and both outcomes occurred.
+  EXPECT_GT (hinted, queries.size () * 4);
+  EXPECT_GT (found, queries.size () * 4);
+  EXPECT_GT (missed, 0u);
+}
+
 // Queries near a surface, with radii many cells wide, as a converging ICP asks them: the answer
 // found within half a cell is the nearest one of the whole radius.
 TEST (BoundedNearestSearch, NearSurfaceQueriesWithWideRadiiMatchBruteForce)

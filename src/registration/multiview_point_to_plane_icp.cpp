@@ -10,7 +10,9 @@
 #include <Eigen/SparseCore>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 
@@ -76,20 +78,22 @@ namespace pcl
 
       /** Pairs sampled points of view \a a with their nearest partners on view \a b and adds their
         * linearised point-to-plane distances; \a a_first: a's unknowns are the first six of \a system.
-        * Poses are about the centre (see multiviewPointToPlaneIcp). */
+        * Poses are about the centre (see multiviewPointToPlaneIcp). \a hints: each sampled point's last
+        * partner, so that the next iteration's search starts from it (sized here on first use). */
       void
       addPairTerms (const IcpView& a, const IcpView& b, const Eigen::Affine3d& pose_a, const Eigen::Affine3d& pose_b,
-                    bool a_first, double max_distance, double min_cos, PairSystem& system)
+                    bool a_first, double max_distance, double min_cos, std::vector<std::int32_t>& hints, PairSystem& system)
       {
         const Eigen::Affine3d a_to_b = pose_b.inverse () * pose_a;
         const float radius = static_cast<float> (max_distance);
         const int offset_a = a_first ? 0 : 6, offset_b = a_first ? 6 : 0;
         float d2;
-        for (const int s : a.sample)
+        hints.resize (a.sample.size (), -1);
+        for (std::size_t k = 0; k < a.sample.size (); ++k)
         {
-          const pcl::PointNormal& p = (*a.mesh->cloud)[s];
+          const pcl::PointNormal& p = (*a.mesh->cloud)[a.sample[k]];
           const Eigen::Vector3d p_a = p.getVector3fMap ().cast<double> ();
-          const int index = b.search->nearest ((a_to_b * p_a).cast<float> (), radius, d2);
+          const int index = b.search->nearest ((a_to_b * p_a).cast<float> (), radius, d2, hints[k]);
           if (index < 0 || !b.usable[index])
             continue;
           const pcl::PointNormal& q = (*b.mesh->cloud)[index];
@@ -231,14 +235,15 @@ namespace pcl
 
       const double max_distance = params.max_distance * resolution;
       const double min_cos = std::cos (params.max_normal_angle * M_PI / 180.0);
+      std::vector<std::array<std::vector<std::int32_t>, 2>> hints (pairs.size ());
       for (int it = 0; it < params.max_iterations && unknowns > 0; ++it)
       {
         JointSystem system (unknowns);
         std::vector<PairSystem> pair_systems (pairs.size ());
         pcl::detail::parallelFor (pairs.size (), threads, [&] (std::size_t k) {
           const int i = pairs[k].first, j = pairs[k].second;
-          addPairTerms (icp_views[i], icp_views[j], centred[i], centred[j], true, max_distance, min_cos, pair_systems[k]);
-          addPairTerms (icp_views[j], icp_views[i], centred[j], centred[i], false, max_distance, min_cos, pair_systems[k]);
+          addPairTerms (icp_views[i], icp_views[j], centred[i], centred[j], true, max_distance, min_cos, hints[k][0], pair_systems[k]);
+          addPairTerms (icp_views[j], icp_views[i], centred[j], centred[i], false, max_distance, min_cos, hints[k][1], pair_systems[k]);
         });
         for (std::size_t k = 0; k < pairs.size (); ++k)
           system.add (pair_systems[k], var[pairs[k].first], var[pairs[k].second]);
