@@ -119,6 +119,7 @@ namespace pcl
                              {"joined", a.joined}, {"full", a.full}, {"excess", a.excess}, {"ms", a.ms}});
       j["candidate_pairs"] = r.candidates.size ();
       j["candidate_pairs_scored"] = r.candidates_scored;
+      j["pairs_registered_ahead_unused"] = r.pairs_registered_ahead_unused;
       j["pairs_registered"] = std::move (attempts);
       j["joins"] = r.joins;
       j["timings_ms"] = {{"meshing", r.timings.prepare_ms}, {"tensors", r.timings.tensors_ms},

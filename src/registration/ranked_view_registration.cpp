@@ -123,6 +123,13 @@ namespace pcl
             }
 
           private:
+            /** A registered pair and the time it took on its core. */
+            struct Registered
+            {
+              TensorRegistrationReport report;
+              double ms = 0.0;
+            };
+
             /** One pass over the candidates not \a decided, best first; on return \a decided marks the
               * candidates a pass with more hypotheses could still join (refused at the cap). */
             void
@@ -130,28 +137,40 @@ namespace pcl
             {
               std::vector<char> capped (decided.size (), 0);
               retried_.clear ();
+              std::map<std::size_t, Registered> ahead;  // registered before their batch, on cores left idle
               for (std::vector<std::size_t> batch; !(batch = nextBatch (decided)).empty ();)
               {
-                std::vector<TensorRegistrationReport> reports (batch.size ());
-                std::vector<double> ms (batch.size ());
-                pcl::detail::parallelFor (batch.size (), threads_, [&] (std::size_t k) {
-                  const ViewPairCandidate& c = result_.candidates[batch[k]];
+                std::vector<std::size_t> work;
+                for (const std::size_t c : batch)
+                  if (ahead.find (c) == ahead.end ())
+                    work.push_back (c);
+                const std::size_t cores = pcl::detail::threadCount (threads_);
+                const std::vector<std::size_t> next = nextCandidates (decided, batch, ahead, (cores - work.size () % cores) % cores);
+                work.insert (work.end (), next.begin (), next.end ());
+                std::vector<Registered> done (work.size ());
+                pcl::detail::parallelFor (work.size (), threads_, [&] (std::size_t k) {
+                  const ViewPairCandidate& c = result_.candidates[work[k]];
                   pcl::StopWatch watch;
-                  reports[k] = registration_ (c.first, c.second, views_[c.first], views_[c.second], result_.dimensions, params);
-                  ms[k] = watch.getTime ();
+                  done[k].report = registration_ (c.first, c.second, views_[c.first], views_[c.second], result_.dimensions, params);
+                  done[k].ms = watch.getTime ();
                 });
-                for (std::size_t k = 0; k < batch.size (); ++k)
+                for (std::size_t k = 0; k < work.size (); ++k)
+                  ahead[work[k]] = std::move (done[k]);
+                for (const std::size_t c : batch)
                 {
-                  decided[batch[k]] = 1;
-                  const TensorRegistrationReport& r = reports[k];
-                  capped[batch[k]] = !r.registered && !r.ambiguous && params.max_hypotheses > 0 &&
-                                     r.hypotheses_tried >= static_cast<std::size_t> (params.max_hypotheses);
-                  take (result_.candidates[batch[k]], r, ms[k]);
+                  decided[c] = 1;
+                  const Registered registered = std::move (ahead.at (c));
+                  ahead.erase (c);
+                  const TensorRegistrationReport& r = registered.report;
+                  capped[c] = !r.registered && !r.ambiguous && params.max_hypotheses > 0 &&
+                              r.hypotheses_tried >= static_cast<std::size_t> (params.max_hypotheses);
+                  take (result_.candidates[c], r, registered.ms);
                   result_.attempts.back ().full = full;
                 }
                 if (progress)
                   progress (MultiviewStage::PAIRWISE, largestGroup (), usable_);
               }
+              result_.pairs_registered_ahead_unused += ahead.size ();
               decided = capped;
             }
 
@@ -217,6 +236,27 @@ namespace pcl
                   ++retried_[{std::min (a, b), std::max (a, b)}];
               }
               return batch;
+            }
+
+            /** Up to \a count candidates that the batches after \a batch would take first, as things stand:
+              * registered now, they keep the cores busy that a short batch (two groups left, one pair
+              * each) leaves idle. A pair's registration depends on nothing but the pair, so when its
+              * batch comes the result is the same; if it never comes, only an idle core's time is lost. */
+            std::vector<std::size_t>
+            nextCandidates (const std::vector<char>& decided, const std::vector<std::size_t>& batch,
+                            const std::map<std::size_t, Registered>& ahead, std::size_t count) const
+            {
+              std::vector<std::size_t> next;
+              for (std::size_t c = 0; c < decided.size () && next.size () < count; ++c)
+              {
+                if (decided[c] || ahead.find (c) != ahead.end () || std::find (batch.begin (), batch.end (), c) != batch.end ())
+                  continue;
+                const ViewPairCandidate& p = result_.candidates[c];
+                const int a = group_of_[p.first], b = group_of_[p.second];
+                if (a != b && !givenUp (p.first) && !givenUp (p.second) && !retriesSpent (a, b))
+                  next.push_back (c);
+              }
+              return next;
             }
 
             /** One registered pair: the two groups are joined when it passed and their union passes global

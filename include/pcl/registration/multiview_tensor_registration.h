@@ -186,6 +186,9 @@ namespace pcl
       std::vector<ViewPairCandidate> candidates;
       /** RANKED: the candidates scored here, the others' scores being known (setPairScoreCache()). */
       std::size_t candidates_scored = 0;
+      /** RANKED: pairs registered ahead of their turn on a core that was idle, and then not needed (a
+        * join before their turn made them redundant). Their work is not in \a attempts. */
+      std::size_t pairs_registered_ahead_unused = 0;
       std::vector<ViewPairAttempt> attempts;
       MultiviewIcpResult global;    ///< what the global step did (poses: also in views[i].pose)
       struct Timings
