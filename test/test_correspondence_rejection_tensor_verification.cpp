@@ -213,6 +213,35 @@ TEST (CorrespondenceRejectorTensorVerification, CovisibilityCountsWhereTheOtherS
   EXPECT_LT (opposite.scene_seen, 0.1);
 }
 
+// Views whose z-buffers are kept in memos, shared by the pairs they are in, are verified as views
+// that build their own: the same free space and covisibility, bit for bit.
+TEST (CorrespondenceRejectorTensorVerification, SharedZBuffersAnswerAsOwnOnes)
+{
+  const auto exact = [] (int m, int s) -> Eigen::Matrix4f {
+    return (views ()[m].pose.inverse () * views ()[s].pose).matrix ().cast<float> ();
+  };
+  std::vector<pcl::RangeViewProjectionMemo::Ptr> memos;
+  for (std::size_t i = 0; i < 3; ++i)
+    memos.push_back (std::make_shared<pcl::RangeViewProjectionMemo> ());
+  for (const auto& [m, s] : {std::pair<int, int> (0, 1), std::pair<int, int> (0, 2), std::pair<int, int> (1, 2)})
+  {
+    CorrespondenceRejectorTensorVerification own, shared;
+    setUp (own, m, s);
+    setUp (shared, m, s);
+    shared.setModel (views ()[m].scan, views ()[m].tensors, memos[m]);
+    shared.setScene (views ()[s].scan, views ()[s].tensors, memos[s]);
+    const double margin = 2.0 * own.getResolution ();
+    EXPECT_EQ (pcl_tensor_test::bits (shared.freeSpaceViolation (exact (m, s), margin)),
+               pcl_tensor_test::bits (own.freeSpaceViolation (exact (m, s), margin))) << m << "-" << s;
+    const TensorCovisibility a = own.covisibility (exact (m, s)), b = shared.covisibility (exact (m, s));
+    EXPECT_EQ (pcl_tensor_test::bits (a.model_seen), pcl_tensor_test::bits (b.model_seen));
+    EXPECT_EQ (pcl_tensor_test::bits (a.scene_matched_seen), pcl_tensor_test::bits (b.scene_matched_seen));
+    TensorVerificationResult ra, rb;
+    EXPECT_EQ (own.verify (exact (m, s), ra), shared.verify (exact (m, s), rb));
+    EXPECT_EQ (pcl_tensor_test::bits (ra.free_space_violation), pcl_tensor_test::bits (rb.free_space_violation));
+  }
+}
+
 TEST (CorrespondenceRejectorTensorVerification, OcclusionBoundariesAPoseSlightlyOffMissesAreNoViolation)
 {
   // Bars 20 pitches in front of a plane, seen by an orthographic sensor: the view against itself,

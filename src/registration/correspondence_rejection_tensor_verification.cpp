@@ -31,17 +31,21 @@ namespace pcl
     }
 
     void
-    CorrespondenceRejectorTensorVerification::setModel (const shared_ptr<const PreparedScan>& scan, const TensorCloudConstPtr& tensors)
+    CorrespondenceRejectorTensorVerification::setModel (const shared_ptr<const PreparedScan>& scan, const TensorCloudConstPtr& tensors,
+                                                        const RangeViewProjectionMemo::Ptr& projections)
     {
       model_ = scan;
+      model_projections_ = projections;
       model_tensors_ = tensors;
       prepared_ = false;
     }
 
     void
-    CorrespondenceRejectorTensorVerification::setScene (const shared_ptr<const PreparedScan>& scan, const TensorCloudConstPtr& tensors)
+    CorrespondenceRejectorTensorVerification::setScene (const shared_ptr<const PreparedScan>& scan, const TensorCloudConstPtr& tensors,
+                                                        const RangeViewProjectionMemo::Ptr& projections)
     {
       scene_ = scan;
+      scene_projections_ = projections;
       scene_tensors_ = tensors;
       prepared_ = false;
     }
@@ -279,18 +283,22 @@ namespace pcl
     void
     CorrespondenceRejectorTensorVerification::projectViews ()
     {
-      // The z-buffers are built only for hypotheses that got this far, once per pair of views.
+      // The z-buffers are built only for hypotheses that got this far: once per view with a memo,
+      // else once per pair of views. They depend on the view and on the empty-space margin alone.
       const int empty_margin = static_cast<int> (std::ceil (params_.empty_space_margin * kZBufferPixelsPerResolution));
-      const auto project = [&] (const PreparedScan& view) {
-        auto projection = std::make_unique<RangeViewProjection> (view.fine, 3.0, kZBufferPixelsPerResolution, 16u << 20, view.resolution);
-        if (params_.empty_space_margin > 0.0)
-          projection->markEmptySpace (empty_margin);
-        return projection;
+      const auto project = [&] (const shared_ptr<const PreparedScan>& view, const RangeViewProjectionMemo::Ptr& memo) {
+        const auto make = [&] () -> RangeViewProjectionMemo::Projection {
+          auto projection = std::make_shared<RangeViewProjection> (view->fine, 3.0, kZBufferPixelsPerResolution, 16u << 20, view->resolution);
+          if (params_.empty_space_margin > 0.0)
+            projection->markEmptySpace (empty_margin);
+          return projection;
+        };
+        return memo ? memo->get (view, params_.empty_space_margin > 0.0 ? empty_margin : -1, make) : make ();
       };
       if (!model_view_)
-        model_view_ = project (*model_);
+        model_view_ = project (model_, model_projections_);
       if (!scene_view_)
-        scene_view_ = project (*scene_);
+        scene_view_ = project (scene_, scene_projections_);
     }
 
     double

@@ -36,8 +36,8 @@ namespace pcl
                          const pcl::PointCloud<pcl::TensorDescriptor>::ConstPtr& scene_tensors, const TensorView& scene,
                          const ObjectDimensions& dims, const TensorRegistrationParams& params)
       {
-        verifier.setModel (model.scan, model.tensors);
-        verifier.setScene (scene.scan, scene_tensors);
+        verifier.setModel (model.scan, model.tensors, model.projections);
+        verifier.setScene (scene.scan, scene_tensors, scene.projections);
         verifier.setObjectDimensions (dims);
         verifier.setParams (params.verification);
       }

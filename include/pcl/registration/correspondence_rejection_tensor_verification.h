@@ -12,6 +12,7 @@
 #include <pcl/registration/tensor_verification.h>
 #include <pcl/search/bounded_nearest_search.h>
 #include <pcl/surface/range_view_projection.h>
+#include <pcl/surface/range_view_projection_memo.h>
 #include <pcl/surface/scan_preparation.h>
 
 #include <memory>
@@ -47,10 +48,14 @@ namespace pcl
 
         CorrespondenceRejectorTensorVerification () { rejection_name_ = "CorrespondenceRejectorTensorVerification"; }
 
-        /** \brief The model view (target): its fine and reduced meshes, and its tensors. */
-        void setModel (const shared_ptr<const PreparedScan>& scan, const TensorCloudConstPtr& tensors);
-        /** \brief The scene view (source): its fine and reduced meshes, and its tensors. */
-        void setScene (const shared_ptr<const PreparedScan>& scan, const TensorCloudConstPtr& tensors);
+        /** \brief The model view (target): its fine and reduced meshes, and its tensors; \a projections,
+          * when given, keeps the view's z-buffers for every pair it is in (else this pair builds its own). */
+        void setModel (const shared_ptr<const PreparedScan>& scan, const TensorCloudConstPtr& tensors,
+                       const RangeViewProjectionMemo::Ptr& projections = nullptr);
+        /** \brief The scene view (source): its fine and reduced meshes, and its tensors; \a projections
+          * as for setModel(). */
+        void setScene (const shared_ptr<const PreparedScan>& scan, const TensorCloudConstPtr& tensors,
+                       const RangeViewProjectionMemo::Ptr& projections = nullptr);
         /** \brief Replace only the scene's tensors (e.g. the next batch, TensorEstimation::setPairBatch):
           * the search structures built for the scene's meshes are kept. */
         void setSceneTensors (const TensorCloudConstPtr& tensors) { scene_tensors_ = tensors; }
@@ -179,7 +184,8 @@ namespace pcl
         bool prepared_{false};
 
         pcl::BoundedNearestSearch model_search_, scene_search_;
-        std::unique_ptr<RangeViewProjection> model_view_, scene_view_;
+        RangeViewProjectionMemo::Ptr model_projections_, scene_projections_;
+        RangeViewProjectionMemo::Projection model_view_, scene_view_;
         PointCloudN::Ptr scene_sample_{new PointCloudN}, model_sample_{new PointCloudN};
         std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> accepted_transforms_;
         std::vector<TensorMatch> input_matches_;

@@ -7,6 +7,7 @@
 #include <pcl/common/scan_viewpoint.h>
 #include <pcl/features/tensor_descriptor.h>
 #include <pcl/registration/tensor_registration_params.h>
+#include <pcl/surface/range_view_projection_memo.h>
 #include <pcl/surface/scan_preparation.h>
 
 #include <memory>
@@ -39,6 +40,9 @@ namespace pcl
       ObjectDimensions dimensions;
       /** Where the meshes' origin lies in the view's own frame. */
       Eigen::Vector3d origin = Eigen::Vector3d::Zero ();
+      /** The z-buffers of \a scan that verification has built, kept for the view's other pairs (copies
+        * of the view share them; null: each pair builds its own). */
+      RangeViewProjectionMemo::Ptr projections = std::make_shared<RangeViewProjectionMemo> ();
     };
 
     /** \brief The centroid of the finite points of \a cloud, in double (zero when there are none). */
