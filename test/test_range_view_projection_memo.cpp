@@ -96,3 +96,21 @@ TEST (RangeViewProjectionMemo, AFailedBuildKeepsNothing)
   EXPECT_TRUE (memo.get (scan, -1, counting (scan, calls)));
   EXPECT_EQ (calls, 1);
 }
+
+// clear() drops what is kept; a projection still in use lives on with its user, and the next ask
+// builds a new one.
+TEST (RangeViewProjectionMemo, ClearDropsWhatIsKept)
+{
+  pcl::RangeViewProjectionMemo memo;
+  const auto scan = square ();
+  std::atomic<int> calls{0};
+  EXPECT_TRUE (memo.empty ());
+  const auto held = memo.get (scan, -1, counting (scan, calls));
+  EXPECT_FALSE (memo.empty ());
+  memo.clear ();
+  EXPECT_TRUE (memo.empty ());
+  pcl::RangeViewProjection::Sample s;
+  EXPECT_TRUE (held->sample (Eigen::Vector3f (0.0f, 0.0f, 0.2f), s));
+  EXPECT_NE (memo.get (scan, -1, counting (scan, calls)), held);
+  EXPECT_EQ (calls, 2);
+}

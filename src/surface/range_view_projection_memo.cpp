@@ -17,4 +17,18 @@ namespace pcl
       it = projections_.emplace (id, Entry{scan, make ()}).first;
     return it->second.projection;
   }
+
+  void
+  RangeViewProjectionMemo::clear ()
+  {
+    const std::lock_guard<std::mutex> lock (mutex_);
+    projections_.clear ();
+  }
+
+  bool
+  RangeViewProjectionMemo::empty ()
+  {
+    const std::lock_guard<std::mutex> lock (mutex_);
+    return projections_.empty ();
+  }
 }

@@ -36,6 +36,14 @@ namespace pcl
       Projection
       get (const shared_ptr<const PreparedScan>& scan, int key, const std::function<Projection ()>& make);
 
+      /** \brief Drop what is kept (those still in use live on with their users); the next get() builds again. */
+      void
+      clear ();
+
+      /** \brief Whether nothing is kept. */
+      bool
+      empty ();
+
     private:
       struct Entry
       {
