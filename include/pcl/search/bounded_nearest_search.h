@@ -24,9 +24,10 @@ namespace pcl
     *
     * Points are sorted by cell (a counting sort over a dense grid, x fastest), so the cells of one grid
     * row that a ball meets hold one contiguous run of points, scanned four at a time with SSE2 where
-    * the compiler has it (each lane's distance is the scalar one, bit for bit). Any radius can be asked; a query scans
-    * about (2 r + cell)^2 / d_res^2 points of a surface, so the cell should be near the radii asked;
-    * nearest() asks half a cell first and the whole radius only when that finds nothing.
+    * the compiler has it (each lane's distance is the scalar one, bit for bit). Any radius can be
+    * asked; a query scans about (2 r + cell)^2 / d_res^2 points of a surface, so the cell should be
+    * near the radii asked; nearest() asks half a cell first and the whole radius only when that finds
+    * nothing, and a hinted nearest() only the ball through its last answer.
     * The dense grid has at most max(4096, 4 n) cells for n points: when the bounding box needs more,
     * the cells are made larger (getCellSize()) and the answers stay exact.
     * \ingroup search
