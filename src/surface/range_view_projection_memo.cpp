@@ -26,7 +26,7 @@ namespace pcl
   }
 
   bool
-  RangeViewProjectionMemo::empty ()
+  RangeViewProjectionMemo::empty () const
   {
     const std::lock_guard<std::mutex> lock (mutex_);
     return projections_.empty ();

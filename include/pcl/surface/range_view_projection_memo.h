@@ -42,7 +42,7 @@ namespace pcl
 
       /** \brief Whether nothing is kept. */
       bool
-      empty ();
+      empty () const;
 
     private:
       struct Entry
@@ -50,7 +50,7 @@ namespace pcl
         shared_ptr<const PreparedScan> scan;
         Projection projection;
       };
-      std::mutex mutex_;
+      mutable std::mutex mutex_;
       std::map<std::pair<const PreparedScan*, int>, Entry> projections_;
   };
 }
