@@ -203,6 +203,19 @@ TEST (ScanVolumetricIntegration, MemoryLimitIsRefused)
   EXPECT_LE (integration.getReport ().volume_bytes, std::size_t (16) << 20);
 }
 
+// A view placed beyond the volume's block coordinates is refused, found on whichever thread looks
+// at it, before anything is allocated.
+TEST (ScanVolumetricIntegration, ViewsBeyondTheBlockRangeAreRefused)
+{
+  auto views = sphereViews (kSphere, pcl::makeRingViewDirections (2, 180.0), smallCamera ());
+  views[1].pose = Eigen::Translation3d (1.0e6, 0.0, 0.0) * views[1].pose;
+  pcl::ScanVolumetricIntegration integration;
+  integration.setNumberOfThreads (2);
+  integration.setInputViews (views);
+  pcl::ScanMesh model;
+  EXPECT_THROW (integration.reconstruct (model), pcl::MemoryLimitException);
+}
+
 TEST (ScanVolumetricIntegration, BadInputIsRefused)
 {
   pcl::ScanVolumetricIntegration integration;

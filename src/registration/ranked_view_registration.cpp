@@ -78,15 +78,22 @@ namespace pcl
                 group_of_ (views.size (), -1), pose_ (views.size (), Eigen::Affine3d::Identity ()), failed_ (views.size (), 0),
                 tree_ (views.size ())
             {
+              // Each view's own check (its convex hull) is independent of the others': made on every core.
+              std::vector<std::shared_ptr<GlobalVerification>> checks (views.size ());
+              pcl::detail::parallelFor (views.size (), threads, [&] (std::size_t i) {
+                if (!views[i])
+                  return;
+                checks[i] = std::make_shared<GlobalVerification> (result.dimensions, result.resolution, params.global_verification);
+                // Poses are between the views' own frames; the meshes may be centred on origin.
+                checks[i]->addView (*views[i]->scan->fine.cloud, Eigen::Affine3d (Eigen::Translation3d (views[i]->origin)));
+              });
               for (std::size_t i = 0; i < views.size (); ++i)
-                if (views[i])
+                if (checks[i])
                 {
                   group_of_[i] = static_cast<int> (groups_.size ());
                   Group g;
                   g.members.push_back (static_cast<int> (i));
-                  g.check = std::make_shared<GlobalVerification> (result.dimensions, result.resolution, params.global_verification);
-                  // Poses are between the views' own frames; the meshes may be centred on origin.
-                  g.check->addView (*views[i]->scan->fine.cloud, Eigen::Affine3d (Eigen::Translation3d (views[i]->origin)));
+                  g.check = std::move (checks[i]);
                   groups_.push_back (g);
                 }
               usable_ = groups_.size ();

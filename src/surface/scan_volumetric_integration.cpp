@@ -13,6 +13,7 @@
 #include <cmath>
 #include <memory>
 #include <numeric>
+#include <unordered_set>
 
 namespace pcl
 {
@@ -31,47 +32,84 @@ namespace pcl
       return voxel >= 0 ? voxel / kBlockSide : -((-voxel + kBlockSide - 1) / kBlockSide);
     }
 
-    /** Register every block within \a margin (metres) of a triangle of any view: the signed distance
-      * band of a view lies within truncation of its surface. Consecutive triangles of a scan mostly
-      * fall in the same blocks, so a repeated block range is skipped. */
-    void
-    reserveBlocks (const std::vector<IntegrationView>& views, double margin, TsdfBlockVolume& volume)
+    /** The blocks within \a margin (metres) of a triangle of \a view, each once, in the order its
+      * triangles first reach them: the signed distance band of a view lies within truncation of its
+      * surface. Consecutive triangles of a scan mostly fall in the same blocks, so a repeated block
+      * range is skipped. Stops after \a max_blocks blocks, or at the first block out of the volume's
+      * range: either way registering them throws. */
+    std::vector<Eigen::Vector3i>
+    viewBlocks (const IntegrationView& view, double margin, double voxel_size, std::size_t max_blocks)
     {
-      const double inv = 1.0 / volume.voxelSize ();
-      for (const auto& view : views)
+      const double inv = 1.0 / voxel_size;
+      const auto& cloud = *view.mesh->cloud;
+      std::vector<Eigen::Vector3d> world (cloud.size ());
+      for (std::size_t i = 0; i < cloud.size (); ++i)
+        world[i] = view.pose * cloud[i].getVector3fMap ().cast<double> ();
+      std::vector<Eigen::Vector3i> blocks;
+      std::unordered_set<std::uint64_t> seen;
+      // Within the range every coordinate fits 21 bits, so the key is one-to-one.
+      const auto key = [] (int x, int y, int z) {
+        const std::uint64_t mask = (std::uint64_t (1) << 21) - 1;
+        return (std::uint64_t (x) & mask) | ((std::uint64_t (y) & mask) << 21) | ((std::uint64_t (z) & mask) << 42);
+      };
+      Eigen::Vector3i last_lo (1, 1, 1), last_hi (0, 0, 0);
+      for (const auto& poly : view.mesh->polygons)
       {
-        const auto& cloud = *view.mesh->cloud;
-        const Eigen::Affine3d& pose = view.pose;
-        std::vector<Eigen::Vector3d> world (cloud.size ());
-        for (std::size_t i = 0; i < cloud.size (); ++i)
-          world[i] = pose * cloud[i].getVector3fMap ().cast<double> ();
-        Eigen::Vector3i last_lo (1, 1, 1), last_hi (0, 0, 0);
-        for (const auto& poly : view.mesh->polygons)
+        Eigen::Vector3d lo = world[poly.vertices[0]], hi = lo;
+        for (int k = 1; k < 3; ++k)
         {
-          Eigen::Vector3d lo = world[poly.vertices[0]], hi = lo;
-          for (int k = 1; k < 3; ++k)
-          {
-            lo = lo.cwiseMin (world[poly.vertices[k]]);
-            hi = hi.cwiseMax (world[poly.vertices[k]]);
-          }
-          Eigen::Vector3i blo, bhi;
-          for (int k = 0; k < 3; ++k)
-          {
-            const double a = std::floor ((lo[k] - margin) * inv), b = std::ceil ((hi[k] + margin) * inv);
-            // Out-of-range coordinates are refused by reserveBlock; clamp before converting to int.
-            const double limit = 2.0 * TsdfBlockVolume::kMaxBlockCoordinate * kBlockSide;
-            blo[k] = blockOf (static_cast<int> (std::max (-limit, std::min (limit, a))));
-            bhi[k] = blockOf (static_cast<int> (std::max (-limit, std::min (limit, b))));
-          }
-          if (blo == last_lo && bhi == last_hi)
-            continue;
-          last_lo = blo;
-          last_hi = bhi;
-          for (int z = blo.z (); z <= bhi.z (); ++z)
-            for (int y = blo.y (); y <= bhi.y (); ++y)
-              for (int x = blo.x (); x <= bhi.x (); ++x)
-                volume.reserveBlock (Eigen::Vector3i (x, y, z));
+          lo = lo.cwiseMin (world[poly.vertices[k]]);
+          hi = hi.cwiseMax (world[poly.vertices[k]]);
         }
+        Eigen::Vector3i blo, bhi;
+        for (int k = 0; k < 3; ++k)
+        {
+          const double a = std::floor ((lo[k] - margin) * inv), b = std::ceil ((hi[k] + margin) * inv);
+          // Out-of-range coordinates are refused by reserveBlock; clamp before converting to int.
+          const double limit = 2.0 * TsdfBlockVolume::kMaxBlockCoordinate * kBlockSide;
+          blo[k] = blockOf (static_cast<int> (std::max (-limit, std::min (limit, a))));
+          bhi[k] = blockOf (static_cast<int> (std::max (-limit, std::min (limit, b))));
+        }
+        if (blo == last_lo && bhi == last_hi)
+          continue;
+        last_lo = blo;
+        last_hi = bhi;
+        for (int z = blo.z (); z <= bhi.z (); ++z)
+          for (int y = blo.y (); y <= bhi.y (); ++y)
+            for (int x = blo.x (); x <= bhi.x (); ++x)
+            {
+              const Eigen::Vector3i block (x, y, z);
+              if (block.cwiseAbs ().maxCoeff () > TsdfBlockVolume::kMaxBlockCoordinate)
+              {
+                blocks.push_back (block);
+                return blocks;
+              }
+              if (!seen.insert (key (x, y, z)).second)
+                continue;
+              blocks.push_back (block);
+              if (blocks.size () > max_blocks)
+                return blocks;
+            }
+      }
+      return blocks;
+    }
+
+    /** Register every block near a triangle of any view, in the order a pass over the views in turn
+      * first reaches them (so the volume, and the mesh, are the same at any thread count). Each view's
+      * blocks are found on its own thread. */
+    void
+    reserveBlocks (const std::vector<IntegrationView>& views, double margin, std::size_t max_blocks, unsigned threads,
+                   TsdfBlockVolume& volume)
+    {
+      std::vector<std::vector<Eigen::Vector3i>> blocks (views.size ());
+      pcl::detail::parallelFor (views.size (), threads, [&] (std::size_t i) {
+        blocks[i] = viewBlocks (views[i], margin, volume.voxelSize (), max_blocks);
+      });
+      for (auto& view : blocks)
+      {
+        for (const auto& block : view)
+          volume.reserveBlock (block);
+        std::vector<Eigen::Vector3i> ().swap (view);
       }
     }
 
@@ -247,21 +285,20 @@ namespace pcl
     report_ = VolumetricIntegrationReport ();
     if (views_.empty ())
       PCL_TENSOR_THROW (InvalidScanException, "volumetric integration: no views");
-    std::vector<double> resolutions;
     for (std::size_t i = 0; i < views_.size (); ++i)
-    {
       if (!views_[i].mesh || views_[i].mesh->polygons.empty ())
         PCL_TENSOR_THROW (InvalidScanException, "volumetric integration: view " << i << " has no triangle");
-      resolutions.push_back (meshResolution (*views_[i].mesh));
-    }
+    std::vector<double> resolutions (views_.size ());
+    pcl::detail::parallelFor (views_.size (), threads_, [&] (std::size_t i) { resolutions[i] = meshResolution (*views_[i].mesh); });
     report_.views = views_.size ();
     report_.resolution = std::accumulate (resolutions.begin (), resolutions.end (), 0.0) / static_cast<double> (views_.size ());
     report_.voxel_size = params_.voxel_size > 0.0 ? params_.voxel_size : params_.voxel_size_resolutions * report_.resolution;
     const float truncation = static_cast<float> (params_.truncation_voxels * report_.voxel_size);
 
     pcl::StopWatch watch;
-    TsdfBlockVolume volume (report_.voxel_size, params_.max_memory_bytes / TsdfBlockVolume::bytesPerBlock ());
-    reserveBlocks (views_, truncation + report_.voxel_size, volume);
+    const std::size_t max_blocks = params_.max_memory_bytes / TsdfBlockVolume::bytesPerBlock ();
+    TsdfBlockVolume volume (report_.voxel_size, max_blocks);
+    reserveBlocks (views_, truncation + report_.voxel_size, max_blocks, threads_, volume);
     volume.allocate ();
     report_.blocks = volume.blockCount ();
     report_.voxels = report_.blocks * detail::kBlockVoxels;
