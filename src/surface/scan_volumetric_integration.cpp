@@ -331,7 +331,7 @@ namespace pcl
     watch.reset ();
     std::vector<Eigen::Vector3f> vertices;
     std::vector<Eigen::Vector3i> triangles;
-    detail::extractZeroSet (volume, vertices, triangles);
+    detail::extractZeroSet (volume, vertices, triangles, threads_);
     report_.extract_ms = watch.getTime ();
 
     watch.reset ();

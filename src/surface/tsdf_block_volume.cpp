@@ -6,6 +6,9 @@
 #include <pcl/common/tensor_exceptions.h>
 #include <pcl/surface/marching_cubes.h>  // pcl::edgeTable, pcl::triTable (Bourke's tables)
 
+#include "../common/parallel_for.h"
+
+#include <algorithm>
 #include <cstdlib>
 
 namespace pcl
@@ -31,27 +34,34 @@ namespace pcl
         std::array<int, 8> index;  ///< block indices by (dx | dy << 1 | dz << 2), -1 when absent
       };
 
-      /** The welded vertex on the edge from voxel (block a, local la) to its +axis neighbour. */
-      class EdgeVertices
+      /** What marching cubes finds in a run of blocks: its vertices, one per cube edge the zero set
+        * crosses (keyed by the edge, at the position the first cube to reach it computes), in the order
+        * the cubes first reach them, and its triangles over them. */
+      class ZeroSetPiece
       {
         public:
-          EdgeVertices (std::vector<Eigen::Vector3f>& vertices) : vertices_ (vertices) {}
-
           std::uint32_t
-          get (std::uint64_t key, const Eigen::Vector3f& position)
+          vertex (std::uint64_t key, const Eigen::Vector3f& position)
           {
-            const auto inserted = map_.emplace (key, static_cast<std::uint32_t> (vertices_.size ()));
+            const auto inserted = index_.emplace (key, static_cast<std::uint32_t> (keys.size ()));
             if (inserted.second)
-              vertices_.push_back (position);
+            {
+              keys.push_back (key);
+              positions.push_back (position);
+            }
             return inserted.first->second;
           }
 
-          void reserve (std::size_t n) { map_.reserve (n); }
+          std::vector<std::uint64_t> keys;
+          std::vector<Eigen::Vector3f> positions;
+          std::vector<Eigen::Vector3i> triangles;
 
         private:
-          std::vector<Eigen::Vector3f>& vertices_;
-          std::unordered_map<std::uint64_t, std::uint32_t> map_;
+          std::unordered_map<std::uint64_t, std::uint32_t> index_;
       };
+
+      /** Blocks extracted as one piece: small enough that the pieces keep every core busy. */
+      constexpr std::size_t kBlocksPerPiece = 64;
     }
 
     std::uint64_t
@@ -105,87 +115,113 @@ namespace pcl
       return keys_.size () * bytesPerBlock () + index_.bucket_count () * sizeof (void*);
     }
 
+    namespace
+    {
+      /** Marching cubes over blocks [first, last) of \a volume (see extractZeroSet). */
+      void
+      extractBlocks (const TsdfBlockVolume& volume, std::size_t first, std::size_t last, ZeroSetPiece& piece)
+      {
+        const float s = static_cast<float> (volume.voxelSize ());
+        auto indexOf = [&] (const TsdfBlock* block) {
+          return block == nullptr ? -1 : static_cast<int> (block - &volume.block (0));
+        };
+        for (std::size_t b = first; b < last; ++b)
+        {
+          const Eigen::Vector3i origin = volume.blockCoordinates (b);
+          BlockNeighbourhood hood;
+          for (int n = 0; n < 8; ++n)
+            hood.index[n] = n == 0 ? static_cast<int> (b)
+                                   : indexOf (volume.find (origin + Eigen::Vector3i (n & 1, (n >> 1) & 1, (n >> 2) & 1)));
+          for (int z = 0; z < kBlockSide; ++z)
+            for (int y = 0; y < kBlockSide; ++y)
+              for (int x = 0; x < kBlockSide; ++x)
+              {
+                // The eight corners: which block holds each, its voxel there, and its local position.
+                float value[8];
+                int corner_block[8], corner_voxel[8];
+                int cube = 0;
+                bool seen = true;
+                for (int c = 0; c < 8 && seen; ++c)
+                {
+                  const int px = x + kCorner[c][0], py = y + kCorner[c][1], pz = z + kCorner[c][2];
+                  const int n = (px >> 3) | ((py >> 3) << 1) | ((pz >> 3) << 2);
+                  corner_block[c] = hood.index[n];
+                  if (corner_block[c] < 0)
+                  {
+                    seen = false;
+                    break;
+                  }
+                  corner_voxel[c] = voxelIndex (px & 7, py & 7, pz & 7);
+                  const TsdfVoxel& v = volume.block (static_cast<std::size_t> (corner_block[c]))[corner_voxel[c]];
+                  seen = v.weight > 0.0f;
+                  value[c] = v.distance;
+                  if (value[c] < 0.0f)
+                    cube |= 1 << c;
+                }
+                if (!seen || pcl::edgeTable[cube] == 0)
+                  continue;
+
+                std::uint32_t edge_vertex[12];
+                for (int e = 0; e < 12; ++e)
+                {
+                  if (!(pcl::edgeTable[cube] & (1u << e)))
+                    continue;
+                  // Key the edge by its lower corner (block and voxel) and its axis, so neighbours share it.
+                  int a = kEdge[e][0], bc = kEdge[e][1];
+                  int axis = 0;
+                  while (kCorner[a][axis] == kCorner[bc][axis])
+                    ++axis;
+                  const int lower = kCorner[a][axis] < kCorner[bc][axis] ? a : bc;
+                  const std::uint64_t key = (static_cast<std::uint64_t> (corner_block[lower]) * kBlockVoxels
+                                             + static_cast<std::uint64_t> (corner_voxel[lower])) * 3 + axis;
+                  const float t = value[a] / (value[a] - value[bc]);
+                  Eigen::Vector3f p;
+                  for (int k = 0; k < 3; ++k)
+                    p[k] = s * (static_cast<float> (origin[k] * kBlockSide + (k == 0 ? x : k == 1 ? y : z) + kCorner[a][k])
+                                + t * static_cast<float> (kCorner[bc][k] - kCorner[a][k]));
+                  edge_vertex[e] = piece.vertex (key, p);
+                }
+                for (int i = 0; pcl::triTable[cube][i] != -1; i += 3)
+                {
+                  const Eigen::Vector3i tri (static_cast<int> (edge_vertex[pcl::triTable[cube][i]]),
+                                             static_cast<int> (edge_vertex[pcl::triTable[cube][i + 1]]),
+                                             static_cast<int> (edge_vertex[pcl::triTable[cube][i + 2]]));
+                  // A corner value of exactly 0 can weld two corners of a triangle into one vertex.
+                  if (tri[0] != tri[1] && tri[1] != tri[2] && tri[0] != tri[2])
+                    piece.triangles.push_back (tri);
+                }
+              }
+        }
+      }
+    }
+
     void
     extractZeroSet (const TsdfBlockVolume& volume, std::vector<Eigen::Vector3f>& vertices,
-                    std::vector<Eigen::Vector3i>& triangles)
+                    std::vector<Eigen::Vector3i>& triangles, unsigned threads)
     {
       vertices.clear ();
       triangles.clear ();
-      EdgeVertices welded (vertices);
-      const float s = static_cast<float> (volume.voxelSize ());
-      std::vector<const TsdfBlock*> by_index (volume.blockCount ());
-      for (std::size_t b = 0; b < volume.blockCount (); ++b)
-        by_index[b] = &volume.block (b);
-      auto indexOf = [&] (const TsdfBlock* block) {
-        return block == nullptr ? -1 : static_cast<int> (block - &volume.block (0));
-      };
-
-      for (std::size_t b = 0; b < volume.blockCount (); ++b)
+      std::vector<ZeroSetPiece> pieces ((volume.blockCount () + kBlocksPerPiece - 1) / kBlocksPerPiece);
+      pcl::detail::parallelFor (pieces.size (), threads, [&] (std::size_t k) {
+        extractBlocks (volume, k * kBlocksPerPiece, std::min (volume.blockCount (), (k + 1) * kBlocksPerPiece), pieces[k]);
+      });
+      // Welded piece by piece in block order: each vertex gets the index and the position of the first
+      // cube, over all blocks in order, that reaches it, as one pass over the blocks would give it.
+      std::unordered_map<std::uint64_t, std::uint32_t> welded;
+      std::vector<std::uint32_t> index;
+      for (auto& piece : pieces)
       {
-        const Eigen::Vector3i origin = volume.blockCoordinates (b);
-        BlockNeighbourhood hood;
-        for (int n = 0; n < 8; ++n)
-          hood.index[n] = n == 0 ? static_cast<int> (b)
-                                 : indexOf (volume.find (origin + Eigen::Vector3i (n & 1, (n >> 1) & 1, (n >> 2) & 1)));
-        for (int z = 0; z < kBlockSide; ++z)
-          for (int y = 0; y < kBlockSide; ++y)
-            for (int x = 0; x < kBlockSide; ++x)
-            {
-              // The eight corners: which block holds each, its voxel there, and its local position.
-              float value[8];
-              int corner_block[8], corner_voxel[8];
-              int cube = 0;
-              bool seen = true;
-              for (int c = 0; c < 8 && seen; ++c)
-              {
-                const int px = x + kCorner[c][0], py = y + kCorner[c][1], pz = z + kCorner[c][2];
-                const int n = (px >> 3) | ((py >> 3) << 1) | ((pz >> 3) << 2);
-                corner_block[c] = hood.index[n];
-                if (corner_block[c] < 0)
-                {
-                  seen = false;
-                  break;
-                }
-                corner_voxel[c] = voxelIndex (px & 7, py & 7, pz & 7);
-                const TsdfVoxel& v = (*by_index[corner_block[c]])[corner_voxel[c]];
-                seen = v.weight > 0.0f;
-                value[c] = v.distance;
-                if (value[c] < 0.0f)
-                  cube |= 1 << c;
-              }
-              if (!seen || pcl::edgeTable[cube] == 0)
-                continue;
-
-              std::uint32_t edge_vertex[12];
-              for (int e = 0; e < 12; ++e)
-              {
-                if (!(pcl::edgeTable[cube] & (1u << e)))
-                  continue;
-                // Key the edge by its lower corner (block and voxel) and its axis, so neighbours share it.
-                int a = kEdge[e][0], bc = kEdge[e][1];
-                int axis = 0;
-                while (kCorner[a][axis] == kCorner[bc][axis])
-                  ++axis;
-                const int lower = kCorner[a][axis] < kCorner[bc][axis] ? a : bc;
-                const std::uint64_t key = (static_cast<std::uint64_t> (corner_block[lower]) * kBlockVoxels
-                                           + static_cast<std::uint64_t> (corner_voxel[lower])) * 3 + axis;
-                const float t = value[a] / (value[a] - value[bc]);
-                Eigen::Vector3f p;
-                for (int k = 0; k < 3; ++k)
-                  p[k] = s * (static_cast<float> (origin[k] * kBlockSide + (k == 0 ? x : k == 1 ? y : z) + kCorner[a][k])
-                              + t * static_cast<float> (kCorner[bc][k] - kCorner[a][k]));
-                edge_vertex[e] = welded.get (key, p);
-              }
-              for (int i = 0; pcl::triTable[cube][i] != -1; i += 3)
-              {
-                const Eigen::Vector3i tri (static_cast<int> (edge_vertex[pcl::triTable[cube][i]]),
-                                           static_cast<int> (edge_vertex[pcl::triTable[cube][i + 1]]),
-                                           static_cast<int> (edge_vertex[pcl::triTable[cube][i + 2]]));
-                // A corner value of exactly 0 can weld two corners of a triangle into one vertex.
-                if (tri[0] != tri[1] && tri[1] != tri[2] && tri[0] != tri[2])
-                  triangles.push_back (tri);
-              }
-            }
+        index.resize (piece.keys.size ());
+        for (std::size_t i = 0; i < piece.keys.size (); ++i)
+        {
+          const auto inserted = welded.emplace (piece.keys[i], static_cast<std::uint32_t> (vertices.size ()));
+          if (inserted.second)
+            vertices.push_back (piece.positions[i]);
+          index[i] = inserted.first->second;
+        }
+        for (const auto& t : piece.triangles)
+          triangles.emplace_back (index[t[0]], index[t[1]], index[t[2]]);
+        piece = ZeroSetPiece ();
       }
     }
   }

@@ -71,9 +71,10 @@ namespace pcl
     /** Marching cubes over the volume (Lorensen & Cline with Bourke's tables, as pcl::MarchingCubes):
       * the zero set of the signed distance in cubes whose eight corners all have weight > 0, with
       * vertices shared between cubes. Triangles are wound so that their normals point toward positive
-      * distance (the sensors' side: out of the object). */
+      * distance (the sensors' side: out of the object). Runs of blocks are processed on \a threads
+      * threads (0: every core) and welded in block order: the mesh is the same on any number. */
     void
     extractZeroSet (const TsdfBlockVolume& volume, std::vector<Eigen::Vector3f>& vertices,
-                    std::vector<Eigen::Vector3i>& triangles);
+                    std::vector<Eigen::Vector3i>& triangles, unsigned threads = 1);
   }
 }
