@@ -66,6 +66,7 @@ namespace
     print_info ("  --voxel-res K      voxel edge in d_res, when --voxel is not given (default %g)\n", v.voxel_size_resolutions);
     print_info ("  --max-memory MB    refuse a voxel volume larger than this (default %zu)\n", v.max_memory_bytes >> 20);
     print_info ("  --faces N          faces per reduced mesh (default %d)\n", m.pairwise.preparation.target_faces);
+    pcl_tensor_tools::printRankSampleHelp (m);
     print_info ("  --viewpoint x,y,z  perspective sensor at x,y,z looking at each scan (default: a PCD's pose; the pushbroom a PLY grid fits; else +z)\n");
     print_info ("  -j N               threads (default 0: every core); the result is the same for any number\n");
     print_info ("  --json             print a JSON summary instead of text\n");

@@ -43,6 +43,7 @@ namespace
     print_info ("  --dims-tolerance T how far registered views may exceed D after ICP, in d_res (default %g)\n",
                 m.pairwise.verification.fine_dimension_tolerance);
     print_info ("  --faces N          faces per reduced mesh (default %d)\n", m.pairwise.preparation.target_faces);
+    pcl_tensor_tools::printRankSampleHelp (m);
     print_info ("  --viewpoint x,y,z  perspective sensor at x,y,z looking at each scan (default: a PCD's pose; the pushbroom a PLY grid fits; else +z)\n");
     print_info ("  -j N               threads (default 0: every core); the output is the same for any number\n");
     print_info ("  --json             print a JSON summary (needs -o: stdout holds it)\n");

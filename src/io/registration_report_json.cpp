@@ -112,7 +112,7 @@ namespace pcl
       j["resolution"] = r.resolution;
       j["dimensions"] = {r.dimensions.D[0], r.dimensions.D[1], r.dimensions.D[2]};
       j["global"] = {{"iterations", r.global.iterations}, {"pairs", r.global.pairs},
-                     {"rms_before", r.global.rms_before}, {"rms_after", r.global.rms_after}};
+                     {"rms_before", r.global.rms_before}, {"rms_after", r.global.rms_after}, {"view_pairs", r.pairs}};
       JsonReport attempts = JsonReport::array ();
       for (const auto& a : r.attempts)
         attempts.push_back ({{"views", {a.first, a.second}}, {"score", a.score}, {"registered", a.registered},

@@ -29,7 +29,7 @@ pcl_tensor_case(app_pairs_json_without_output 2 COMMAND ${PAIRS} ${VIEW0} ${VIEW
 pcl_tensor_case(app_pairs_output_folder_missing 2
                 COMMAND ${PAIRS} ${VIEW0} ${VIEW1} --cache ${PAIRS_OUT}/empty_cache --rank 1 -o /nonexistent/pairs.txt)
 pcl_tensor_case(app_pairs_param_rank_0 2 COMMAND ${PAIRS} ${VIEW0} ${VIEW1} --cache ${PAIRS_OUT}/empty_cache --rank 0)
-foreach(option "--faces;3" "--dims;0,1,1" "--dims-tolerance;-1" "--viewpoint;1,2" "-j;-1")
+foreach(option "--faces;3" "--dims;0,1,1" "--dims-tolerance;-1" "--viewpoint;1,2" "-j;-1" "--rank-sample;-1")
   string(REGEX REPLACE "[^a-z0-9]+" "_" tag "${option}")
   pcl_tensor_case(app_pairs_param${tag} 2 COMMAND ${PAIRS} ${VIEW0} ${VIEW1} --cache ${PAIRS_OUT}/empty_cache --rank 1 ${option})
 endforeach()
