@@ -47,11 +47,6 @@ namespace pcl
         world[i] = view.pose * cloud[i].getVector3fMap ().cast<double> ();
       std::vector<Eigen::Vector3i> blocks;
       std::unordered_set<std::uint64_t> seen;
-      // Within the range every coordinate fits 21 bits, so the key is one-to-one.
-      const auto key = [] (int x, int y, int z) {
-        const std::uint64_t mask = (std::uint64_t (1) << 21) - 1;
-        return (std::uint64_t (x) & mask) | ((std::uint64_t (y) & mask) << 21) | ((std::uint64_t (z) & mask) << 42);
-      };
       Eigen::Vector3i last_lo (1, 1, 1), last_hi (0, 0, 0);
       for (const auto& poly : view.mesh->polygons)
       {
@@ -84,7 +79,7 @@ namespace pcl
                 blocks.push_back (block);
                 return blocks;
               }
-              if (!seen.insert (key (x, y, z)).second)
+              if (!seen.insert (TsdfBlockVolume::key (block)).second)
                 continue;
               blocks.push_back (block);
               if (blocks.size () > max_blocks)

@@ -58,8 +58,10 @@ namespace pcl
         /** Estimated bytes per block: the voxels and one index entry. */
         static std::size_t bytesPerBlock ();
 
-      private:
+        /** The index key of a block: one-to-one for coordinates within kMaxBlockCoordinate. */
         static std::uint64_t key (const Eigen::Vector3i& block);
+
+      private:
 
         double voxel_size_;
         std::size_t max_blocks_;
