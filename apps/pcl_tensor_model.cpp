@@ -338,7 +338,10 @@ namespace
     if (!o.cache.empty ())
     {
       cache = std::make_unique<pcl::io::TensorViewCache> (o.cache);
-      run_key = pcl::io::modelRunKey (inputFiles (o), outputSettings (argc, argv));
+      std::vector<std::string> settings = outputSettings (argc, argv);
+      // The library's own settings too: a run recorded before its defaults changed is made again.
+      settings.push_back ("library " + std::to_string (pcl::io::hashModelRunSettings (o.registration, o.integration)));
+      run_key = pcl::io::modelRunKey (inputFiles (o), settings);
       pcl::io::ModelRunRecord record;
       if (pcl::io::loadModelRun (*cache, run_key, record))
         return replay (record, o);

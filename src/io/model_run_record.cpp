@@ -4,6 +4,7 @@
 #include <pcl/io/model_run_record.h>
 #include <pcl/io/atomic_file.h>
 #include <pcl/io/content_hash.h>
+#include <pcl/io/tensor_view_cache_key.h>
 #include "byte_codec.h"
 #include "cache_entry_file.h"
 
@@ -32,6 +33,34 @@ namespace pcl
       for (const auto& s : settings)
         options.add (static_cast<std::uint64_t> (s.size ())).update (s);
       return {views.digest (), options.digest ()};
+    }
+
+    std::uint64_t
+    hashModelRunSettings (const pcl::registration::MultiviewRegistrationParams& r, const pcl::VolumetricIntegrationParams& v)
+    {
+      static_assert (sizeof (pcl::registration::GlobalVerificationParams) == 16,
+                     "a field was added to GlobalVerificationParams: add it to hashModelRunSettings () too");
+      static_assert (sizeof (pcl::registration::MultiviewIcpParams) == 56,
+                     "a field was added to MultiviewIcpParams: add it to hashModelRunSettings () too");
+      static_assert (sizeof (pcl::VolumetricIntegrationParams) == 56,
+                     "a field was added to VolumetricIntegrationParams: add it to hashModelRunSettings () too");
+      // Raise when a model run answers differently under the same settings.
+      constexpr int kModelRunRevision = 2;
+      ContentHash hash;
+      hash.update ("model run").add (kModelRunRevision);
+      const TensorViewCacheKey pair = pairCacheKey ({}, {}, ObjectDimensions (), r.pairwise);
+      hash.add (pair.source).add (pair.preparation).add (hashRankingSettings (ObjectDimensions (), r.pairwise, r.ranking));
+      const auto& g = r.global_verification;
+      hash.add (g.tolerance).add (g.checked_dimensions);
+      hash.add (r.object_dimensions[0]).add (r.object_dimensions[1]).add (r.object_dimensions[2]).add (r.search);
+      hash.add (r.max_failed_pairs).add (r.first_pass_hypotheses).add (r.second_pass_pairs).add (r.loop);
+      hash.add (r.max_references).add (r.keep_best).add (r.global_registration).add (r.min_overlap).add (r.max_overlap_pairs);
+      const auto& i = r.global;
+      hash.add (i.max_iterations).add (i.max_distance).add (i.sample_points).add (i.max_normal_angle).add (i.skip_boundary);
+      hash.add (i.min_rotation).add (i.min_translation);
+      hash.add (v.voxel_size).add (v.voxel_size_resolutions).add (v.truncation_voxels).add (v.border_ramp_edges);
+      hash.add (v.pixels_per_resolution).add (v.max_memory_bytes).add (v.min_component_fraction);
+      return hash.digest ();
     }
 
     void

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <pcl/io/tensor_view_cache.h>
+#include <pcl/registration/multiview_tensor_registration.h>
+#include <pcl/surface/scan_volumetric_integration.h>
 
 #include <cstdint>
 #include <string>
@@ -29,6 +31,15 @@ namespace pcl
       * every setting that changes the outputs, as the caller lists them. */
     TensorViewCacheKey
     modelRunKey (const std::vector<std::string>& view_files, const std::vector<std::string>& settings);
+
+    /** \brief A hash of every setting a model run's outputs depend on besides its views, defaults
+      * included: \a registration (the pair settings as pairCacheKey() takes them, the ranking, global
+      * verification, the search and the global step) and \a integration. Given to modelRunKey() among the
+      * settings, it makes a run recorded before a library's defaults changed be made again, never
+      * replayed with the old answers. */
+    std::uint64_t
+    hashModelRunSettings (const pcl::registration::MultiviewRegistrationParams& registration,
+                          const pcl::VolumetricIntegrationParams& integration);
 
     /** \brief Store \a record under \a key. \throw pcl::IOException when the entry cannot be written */
     void
