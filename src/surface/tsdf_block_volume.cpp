@@ -117,80 +117,106 @@ namespace pcl
 
     namespace
     {
+      /** The block at index \a b and its seven neighbours on the +x, +y, +z sides. */
+      BlockNeighbourhood
+      neighbourhood (const TsdfBlockVolume& volume, std::size_t b)
+      {
+        const Eigen::Vector3i origin = volume.blockCoordinates (b);
+        BlockNeighbourhood hood;
+        hood.index[0] = static_cast<int> (b);
+        for (int n = 1; n < 8; ++n)
+        {
+          const TsdfBlock* block = volume.find (origin + Eigen::Vector3i (n & 1, (n >> 1) & 1, (n >> 2) & 1));
+          hood.index[n] = block == nullptr ? -1 : static_cast<int> (block - &volume.block (0));
+        }
+        return hood;
+      }
+
+      /** One cube of marching cubes: the block, voxel and signed distance at each of its corners. */
+      struct Cube
+      {
+        float value[8];
+        int block[8], voxel[8];
+        int index = 0;  ///< the case of Bourke's tables: bit c set when corner c is inside
+      };
+
+      /** The cube whose lowest corner is voxel (x, y, z) of the block of \a hood; false when one of its
+        * corners lies in no block or was never seen. */
+      bool
+      cubeAt (const TsdfBlockVolume& volume, const BlockNeighbourhood& hood, int x, int y, int z, Cube& cube)
+      {
+        cube.index = 0;
+        for (int c = 0; c < 8; ++c)
+        {
+          const int px = x + kCorner[c][0], py = y + kCorner[c][1], pz = z + kCorner[c][2];
+          cube.block[c] = hood.index[(px >> 3) | ((py >> 3) << 1) | ((pz >> 3) << 2)];
+          if (cube.block[c] < 0)
+            return false;
+          cube.voxel[c] = voxelIndex (px & 7, py & 7, pz & 7);
+          const TsdfVoxel& v = volume.block (static_cast<std::size_t> (cube.block[c]))[cube.voxel[c]];
+          if (!(v.weight > 0.0f))
+            return false;
+          cube.value[c] = v.distance;
+          if (cube.value[c] < 0.0f)
+            cube.index |= 1 << c;
+        }
+        return true;
+      }
+
+      /** The vertex where the zero set crosses edge \a e of \a cube (lowest corner at \a voxel, in global
+        * voxel coordinates), welded in \a piece: the edge is keyed by its lower corner (block and voxel)
+        * and its axis, so the cubes around it share it. */
+      std::uint32_t
+      edgeVertex (const Cube& cube, int e, const Eigen::Vector3i& voxel, float voxel_size, ZeroSetPiece& piece)
+      {
+        const int a = kEdge[e][0], b = kEdge[e][1];
+        int axis = 0;
+        while (kCorner[a][axis] == kCorner[b][axis])
+          ++axis;
+        const int lower = kCorner[a][axis] < kCorner[b][axis] ? a : b;
+        const std::uint64_t key = (static_cast<std::uint64_t> (cube.block[lower]) * kBlockVoxels
+                                   + static_cast<std::uint64_t> (cube.voxel[lower])) * 3 + axis;
+        const float t = cube.value[a] / (cube.value[a] - cube.value[b]);
+        Eigen::Vector3f p;
+        for (int k = 0; k < 3; ++k)
+          p[k] = voxel_size * (static_cast<float> (voxel[k] + kCorner[a][k]) + t * static_cast<float> (kCorner[b][k] - kCorner[a][k]));
+        return piece.vertex (key, p);
+      }
+
+      /** The triangles of \a cube (lowest corner at \a voxel) into \a piece. */
+      void
+      addCube (const Cube& cube, const Eigen::Vector3i& voxel, float voxel_size, ZeroSetPiece& piece)
+      {
+        std::uint32_t edge_vertex[12];
+        for (int e = 0; e < 12; ++e)
+          if (pcl::edgeTable[cube.index] & (1u << e))
+            edge_vertex[e] = edgeVertex (cube, e, voxel, voxel_size, piece);
+        for (int i = 0; pcl::triTable[cube.index][i] != -1; i += 3)
+        {
+          const Eigen::Vector3i tri (static_cast<int> (edge_vertex[pcl::triTable[cube.index][i]]),
+                                     static_cast<int> (edge_vertex[pcl::triTable[cube.index][i + 1]]),
+                                     static_cast<int> (edge_vertex[pcl::triTable[cube.index][i + 2]]));
+          // A corner value of exactly 0 can weld two corners of a triangle into one vertex.
+          if (tri[0] != tri[1] && tri[1] != tri[2] && tri[0] != tri[2])
+            piece.triangles.push_back (tri);
+        }
+      }
+
       /** Marching cubes over blocks [first, last) of \a volume (see extractZeroSet). */
       void
       extractBlocks (const TsdfBlockVolume& volume, std::size_t first, std::size_t last, ZeroSetPiece& piece)
       {
         const float s = static_cast<float> (volume.voxelSize ());
-        auto indexOf = [&] (const TsdfBlock* block) {
-          return block == nullptr ? -1 : static_cast<int> (block - &volume.block (0));
-        };
+        Cube cube;
         for (std::size_t b = first; b < last; ++b)
         {
-          const Eigen::Vector3i origin = volume.blockCoordinates (b);
-          BlockNeighbourhood hood;
-          for (int n = 0; n < 8; ++n)
-            hood.index[n] = n == 0 ? static_cast<int> (b)
-                                   : indexOf (volume.find (origin + Eigen::Vector3i (n & 1, (n >> 1) & 1, (n >> 2) & 1)));
+          const BlockNeighbourhood hood = neighbourhood (volume, b);
+          const Eigen::Vector3i origin = volume.blockCoordinates (b) * kBlockSide;
           for (int z = 0; z < kBlockSide; ++z)
             for (int y = 0; y < kBlockSide; ++y)
               for (int x = 0; x < kBlockSide; ++x)
-              {
-                // The eight corners: which block holds each, its voxel there, and its local position.
-                float value[8];
-                int corner_block[8], corner_voxel[8];
-                int cube = 0;
-                bool seen = true;
-                for (int c = 0; c < 8 && seen; ++c)
-                {
-                  const int px = x + kCorner[c][0], py = y + kCorner[c][1], pz = z + kCorner[c][2];
-                  const int n = (px >> 3) | ((py >> 3) << 1) | ((pz >> 3) << 2);
-                  corner_block[c] = hood.index[n];
-                  if (corner_block[c] < 0)
-                  {
-                    seen = false;
-                    break;
-                  }
-                  corner_voxel[c] = voxelIndex (px & 7, py & 7, pz & 7);
-                  const TsdfVoxel& v = volume.block (static_cast<std::size_t> (corner_block[c]))[corner_voxel[c]];
-                  seen = v.weight > 0.0f;
-                  value[c] = v.distance;
-                  if (value[c] < 0.0f)
-                    cube |= 1 << c;
-                }
-                if (!seen || pcl::edgeTable[cube] == 0)
-                  continue;
-
-                std::uint32_t edge_vertex[12];
-                for (int e = 0; e < 12; ++e)
-                {
-                  if (!(pcl::edgeTable[cube] & (1u << e)))
-                    continue;
-                  // Key the edge by its lower corner (block and voxel) and its axis, so neighbours share it.
-                  int a = kEdge[e][0], bc = kEdge[e][1];
-                  int axis = 0;
-                  while (kCorner[a][axis] == kCorner[bc][axis])
-                    ++axis;
-                  const int lower = kCorner[a][axis] < kCorner[bc][axis] ? a : bc;
-                  const std::uint64_t key = (static_cast<std::uint64_t> (corner_block[lower]) * kBlockVoxels
-                                             + static_cast<std::uint64_t> (corner_voxel[lower])) * 3 + axis;
-                  const float t = value[a] / (value[a] - value[bc]);
-                  Eigen::Vector3f p;
-                  for (int k = 0; k < 3; ++k)
-                    p[k] = s * (static_cast<float> (origin[k] * kBlockSide + (k == 0 ? x : k == 1 ? y : z) + kCorner[a][k])
-                                + t * static_cast<float> (kCorner[bc][k] - kCorner[a][k]));
-                  edge_vertex[e] = piece.vertex (key, p);
-                }
-                for (int i = 0; pcl::triTable[cube][i] != -1; i += 3)
-                {
-                  const Eigen::Vector3i tri (static_cast<int> (edge_vertex[pcl::triTable[cube][i]]),
-                                             static_cast<int> (edge_vertex[pcl::triTable[cube][i + 1]]),
-                                             static_cast<int> (edge_vertex[pcl::triTable[cube][i + 2]]));
-                  // A corner value of exactly 0 can weld two corners of a triangle into one vertex.
-                  if (tri[0] != tri[1] && tri[1] != tri[2] && tri[0] != tri[2])
-                    piece.triangles.push_back (tri);
-                }
-              }
+                if (cubeAt (volume, hood, x, y, z, cube) && pcl::edgeTable[cube.index] != 0)
+                  addCube (cube, origin + Eigen::Vector3i (x, y, z), s, piece);
         }
       }
     }
