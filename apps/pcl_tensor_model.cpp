@@ -13,6 +13,7 @@
 #include <pcl/console/time.h>
 #include <pcl/io/atomic_file.h>
 #include <pcl/io/cached_tensor_view.h>
+#include <pcl/io/integration_volume_cache.h>
 #include <pcl/io/model_run_record.h>
 #include <pcl/io/scan_mesh_io.h>
 #include <pcl/io/recorded_pair_registration.h>
@@ -23,6 +24,7 @@
 #include <pcl/registration/multiview_tensor_registration.h>
 #include <pcl/surface/scan_volumetric_integration.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -50,6 +52,9 @@ namespace
     print_info ("  --pairs FILE       overlapping pairs, one \"A B\" per line (file names or 0-based indices)\n");
     print_info ("  --cache DIR        keep each view's meshes and tensors in DIR (pcl_tensor_prepare's cache): a re-run,\n"
                 "                     or one with views added, computes only what is new\n");
+    print_info ("  --keep-poses CONF  views that CONF names keep its poses, and only the others are registered, to them:\n"
+                "                     to add views to a model made before, give its .conf (with --cache, only the new\n"
+                "                     views are meshed); the global step moves the new views only\n");
     print_info ("  --pairs-results F  pair registrations computed elsewhere (pcl_tensor_pairs; repeat for several\n"
                 "                     files): pairs are taken from them, never registered here\n");
     print_info ("  --loop             a turntable: the last view overlaps the first (closes the loop)\n");
@@ -79,7 +84,7 @@ namespace
   struct ModelOptions
   {
     std::vector<std::string> views;
-    std::string output, conf, pairs, cache;
+    std::string output, conf, pairs, cache, keep_poses;
     std::vector<std::string> pairs_results;
     bool json = false;
     unsigned threads = 0;
@@ -107,6 +112,7 @@ namespace
     pcl_tensor_tools::requireWritableFolder (o.conf);
     parse_argument (argc, argv, "--pairs", o.pairs);
     parse_argument (argc, argv, "--cache", o.cache);
+    parse_argument (argc, argv, "--keep-poses", o.keep_poses);
     for (int i = 1; i + 1 < argc; ++i)
       if (std::string (argv[i]) == "--pairs-results")
         o.pairs_results.push_back (argv[++i]);
@@ -150,13 +156,53 @@ namespace
     };
   }
 
-  void
-  saveConf (const std::string& path, const pcl::registration::MultiviewRegistrationResult& result, int component)
+  /** The pose of each view that the --keep-poses file names (none without it), read before any view. */
+  struct KeptPoses
   {
     std::vector<pcl::io::StanfordConfEntry> entries;
-    for (const auto& v : result.views)
-      if (v.registered && v.component == component)
-        entries.push_back (pcl::io::StanfordConfEntry::fromPose (baseName (v.name), v.pose));
+    std::vector<int> entry_of_view;  ///< -1: not named
+
+    KeptPoses (const std::string& conf, const std::vector<std::string>& views)
+      : entries (conf.empty () ? std::vector<pcl::io::StanfordConfEntry> () : pcl::io::loadStanfordConf (conf)),
+        entry_of_view (pcl::io::confEntriesOfFiles (entries, views))
+    {
+      if (!conf.empty () && std::count (entry_of_view.begin (), entry_of_view.end (), -1) == static_cast<long> (views.size ()))
+        print_warn ("--keep-poses %s names none of the views: every view is registered\n", conf.c_str ());
+    }
+
+    /** The .conf entry of view \a i, registered: a kept pose as it was read (so that it stays the same,
+      * to the last digit, however often a model is extended), another as fromPose() writes it. */
+    pcl::io::StanfordConfEntry
+    entryOf (const pcl::registration::MultiviewRegistrationResult& result, std::size_t i) const
+    {
+      const auto& v = result.views[i];
+      if (!v.pose_kept || entry_of_view[i] < 0)
+        return pcl::io::StanfordConfEntry::fromPose (baseName (v.name), v.pose);
+      pcl::io::StanfordConfEntry kept = entries[entry_of_view[i]];
+      kept.file = baseName (v.name);
+      return kept;
+    }
+
+    void
+    applyTo (std::vector<pcl::registration::MultiviewInput>& inputs) const
+    {
+      for (std::size_t i = 0; i < inputs.size (); ++i)
+        if (entry_of_view[i] >= 0)
+        {
+          inputs[i].pose_known = true;
+          inputs[i].known_pose = entries[entry_of_view[i]].pose ();
+        }
+    }
+  };
+
+  void
+  saveConf (const std::string& path, const pcl::registration::MultiviewRegistrationResult& result, int component,
+            const KeptPoses& kept)
+  {
+    std::vector<pcl::io::StanfordConfEntry> entries;
+    for (std::size_t i = 0; i < result.views.size (); ++i)
+      if (result.views[i].registered && result.views[i].component == component)
+        entries.push_back (kept.entryOf (result, i));
     pcl::io::AtomicFileWriter file (path);
     pcl::io::saveStanfordConf (file.temporaryPath (), entries);
     file.commit ();
@@ -252,8 +298,9 @@ namespace
   {
     std::vector<std::string> files = o.views;
     files.insert (files.end (), o.pairs_results.begin (), o.pairs_results.end ());
-    if (!o.pairs.empty ())
-      files.push_back (o.pairs);
+    for (const auto& file : {o.pairs, o.keep_poses})
+      if (!file.empty ())
+        files.push_back (file);
     return files;
   }
 
@@ -291,26 +338,53 @@ namespace
     return record.exit_code;
   }
 
-  /** Volumetric integration of each component into its own model. */
-  std::vector<ComponentModel>
-  integrateComponents (const pcl::registration::MultiviewRegistrationResult& result, const ModelOptions& o)
+  /** The cache key of the voxels of component \a c: of its views of kept poses, as an earlier run
+    * stored them, or of all its views, as this run stores them; each with its pose as its .conf line
+    * gives it back. */
+  pcl::io::TensorViewCacheKey
+  volumeKey (const pcl::registration::MultiviewRegistrationResult& result, const std::vector<pcl::io::CachedViewReport>& prepared,
+             int c, bool kept_only, const KeptPoses& kept, const pcl::VolumetricIntegrationParams& params)
   {
-    std::vector<ComponentModel> models (static_cast<std::size_t> (std::max (result.components, 0)));
-    for (int c = 0; c < result.components; ++c)
+    std::vector<pcl::io::TensorViewCacheKey> keys;
+    pcl::registration::ViewPoses poses;
+    for (std::size_t i = 0; i < result.views.size (); ++i)
     {
-      ComponentModel& m = models[c];
-      m.model = partPath (o.output, c);
-      m.conf = partPath (o.conf, c);
-      pcl::ScanVolumetricIntegration integration;
-      integration.setParams (o.integration);
-      integration.setNumberOfThreads (o.threads);
-      const auto views = pcl::registration::registeredIntegrationViews (result, c);
-      m.views = views.size ();
-      integration.setInputViews (views);
-      integration.reconstruct (m.mesh);
-      m.volume = integration.getReport ();
+      const auto& v = result.views[i];
+      if (v.registered && v.component == c && (!kept_only || v.pose_kept))
+      {
+        keys.push_back (prepared[i].key);
+        poses.push_back (kept.entryOf (result, i).pose ());
+      }
     }
-    return models;
+    return pcl::io::integrationVolumeKey (keys, poses, params);
+  }
+
+  /** Volumetric integration of component \a c into its own model. With a cache, the voxels of its views
+    * of kept poses are taken from it when an earlier run stored them (only the other views are
+    * integrated), and the main model's voxels are stored for the next run that extends it. */
+  ComponentModel
+  integrateComponent (const pcl::registration::MultiviewRegistrationResult& result, const ModelOptions& o, int c,
+                      const pcl::io::TensorViewCache* cache, const std::vector<pcl::io::CachedViewReport>& prepared,
+                      const KeptPoses& kept_poses)
+  {
+    ComponentModel m;
+    m.model = partPath (o.output, c);
+    m.conf = partPath (o.conf, c);
+    pcl::ScanVolumetricIntegration integration;
+    integration.setParams (o.integration);
+    integration.setNumberOfThreads (o.threads);
+    const bool any_kept = std::any_of (result.views.begin (), result.views.end (),
+                                   [c] (const auto& v) { return v.registered && v.component == c && v.pose_kept; });
+    if (cache && any_kept)
+      integration.setInitialVolume (pcl::io::loadIntegrationVolume (*cache, volumeKey (result, prepared, c, true, kept_poses, o.integration)));
+    integration.setKeepVolume (cache && c == 0);
+    integration.setInputViews (pcl::registration::registeredIntegrationViews (result, c, !integration.getInitialVolume ()));
+    integration.reconstruct (m.mesh);
+    m.volume = integration.getReport ();
+    m.views = m.volume.views;
+    if (integration.getVolume ())
+      pcl::io::saveIntegrationVolume (*cache, volumeKey (result, prepared, c, false, kept_poses, o.integration), *integration.getVolume ());
+    return m;
   }
 
   int
@@ -346,6 +420,7 @@ namespace
       if (pcl::io::loadModelRun (*cache, run_key, record))
         return replay (record, o);
     }
+    const KeptPoses kept (o.keep_poses, o.views);
     std::vector<pcl::registration::MultiviewInput> inputs;
     const pcl::registration::MultiviewProgress show = [&progress] (pcl::registration::MultiviewStage stage, std::size_t done,
                                                                    std::size_t n) {
@@ -353,6 +428,7 @@ namespace
     };
     const auto prepared = pcl::io::prepareMultiviewInputs (o.views.size (), viewLoader (o.views, argc, argv), o.registration,
                                                            o.threads, cache.get (), inputs, show);
+    kept.applyTo (inputs);
     // Pairs from the cache (or registered and kept there), and from results computed elsewhere first.
     pcl::registration::ViewPairRegistration pairs = [] (int, int, const auto& model, const auto& scene, const auto& dims,
                                                         const auto& params) {
@@ -382,7 +458,9 @@ namespace
 
     timer.tic ();
     progress.update ("integration", 0, 1);
-    std::vector<ComponentModel> models = integrateComponents (result, o);
+    std::vector<ComponentModel> models;
+    for (int c = 0; c < result.components; ++c)
+      models.push_back (integrateComponent (result, o, c, cache.get (), prepared, kept));
     progress.update ("integration", 1, 1);
     progress.finish ();
     t.integration_ms = timer.toc ();
@@ -391,7 +469,7 @@ namespace
     for (std::size_t c = 0; c < models.size (); ++c)
     {
       pcl::io::saveScanMesh (models[c].model, models[c].mesh);
-      saveConf (models[c].conf, result, static_cast<int> (c));
+      saveConf (models[c].conf, result, static_cast<int> (c), kept);
     }
     t.write_ms = timer.toc ();
     t.total_ms = total.toc ();

@@ -142,6 +142,47 @@ TEST (MultiviewPointToPlaneIcp, FindsTheNeighboursOnTheRing)
     EXPECT_TRUE (p.first != 1 && p.second != 1);
 }
 
+// A model extended with new views: the views settled before stay where they are, to the bit, and only
+// the new ones move onto them.
+TEST (MultiviewPointToPlaneIcp, SeveralFixedViewsKeepTheirPosesExactly)
+{
+  const Ring& r = ring ();
+  ViewPoses initial = perturbedTruth (r, 11);
+  std::vector<bool> fixed (12, false);
+  for (int i = 0; i < 9; ++i)
+  {
+    fixed[i] = true;
+    initial[i] = r.truth[i];
+  }
+  const MultiviewIcpResult result = multiviewPointToPlaneIcp (meshes (r), initial, ringPairs (12), fixed, r.resolution, {});
+  for (int i = 0; i < 9; ++i)
+    EXPECT_TRUE (result.poses[i].matrix () == initial[i].matrix ()) << "fixed view " << i << " moved";
+  for (int i = 9; i < 12; ++i)
+  {
+    EXPECT_LT (pcl::rotationErrorDeg (result.poses[i].rotation (), r.truth[i].rotation ()), 0.02) << "view " << i;
+    EXPECT_LT (centroidError (r.scans[i].fine, result.poses[i], r.truth[i], r.resolution), 0.05) << "view " << i;
+  }
+  EXPECT_THROW (multiviewPointToPlaneIcp (meshes (r), initial, ringPairs (12), std::vector<bool> (12, false), r.resolution, {}),
+                pcl::BadArgumentException) << "no view fixed: the frame is not defined";
+  EXPECT_THROW (multiviewPointToPlaneIcp (meshes (r), initial, ringPairs (12), std::vector<bool> (3, true), r.resolution, {}),
+                pcl::BadArgumentException);
+}
+
+// Only the candidates given are tried, and of them those that overlap are returned, as
+// findOverlappingViews() finds them among all pairs.
+TEST (MultiviewPointToPlaneIcp, SelectsTheOverlappingCandidates)
+{
+  const Ring& r = ring ();
+  const ViewPairs all = findOverlappingViews (meshes (r), r.truth, {}, r.resolution, 2.0, 0.3);
+  const ViewPairs candidates{{11, 0}, {11, 5}, {11, 10}, {3, 4}};
+  const ViewPairs selected = selectOverlappingPairs (meshes (r), r.truth, candidates, r.resolution, 2.0, 0.3);
+  const ViewPairs expected{{11, 0}, {11, 10}, {3, 4}};
+  EXPECT_EQ (selected, expected) << "11 and 5 are 180 degrees apart; the others neighbours";
+  for (const auto& p : selected)
+    EXPECT_EQ (std::count (all.begin (), all.end (), std::make_pair (std::min (p.first, p.second), std::max (p.first, p.second))), 1);
+  EXPECT_THROW (selectOverlappingPairs (meshes (r), r.truth, {{0, 0}}, r.resolution, 2.0, 0.3), pcl::BadArgumentException);
+}
+
 TEST (MultiviewPointToPlaneIcp, RefusesBadInput)
 {
   const Ring& r = ring ();

@@ -379,3 +379,93 @@ TEST (MultiviewTensorRegistration, RankedSearchGivesTheSameResultOnAnyNumberOfTh
       EXPECT_TRUE (results[r].views[k].pose.matrix () == results[0].views[k].pose.matrix ()) << inputs[k].name;
   }
 }
+
+namespace
+{
+  /** The example ring with the true poses (relative to view 0) given for the views \a known marks. */
+  std::vector<MultiviewInput>
+  ringWithKnownPoses (const std::vector<bool>& known)
+  {
+    const auto& views = exampleRing ();
+    std::vector<MultiviewInput> inputs;
+    for (std::size_t i = 0; i < views.size (); ++i)
+    {
+      inputs.push_back (inputOf (views[i], "view" + std::to_string (i)));
+      inputs.back ().pose_known = known[i];
+      inputs.back ().known_pose = views[0].view.pose.inverse () * views[i].view.pose;
+    }
+    return inputs;
+  }
+
+  /** Views of kept poses keep them to the bit; the others are within 0.5 deg and 2 d_res of the truth. */
+  void
+  expectKeptAndRegistered (const MultiviewRegistrationResult& result, const std::vector<MultiviewInput>& inputs)
+  {
+    const auto& views = exampleRing ();
+    ASSERT_EQ (result.registeredCount (), inputs.size ());
+    EXPECT_EQ (result.components, 1);
+    for (std::size_t i = 0; i < inputs.size (); ++i)
+    {
+      const auto& v = result.views[i];
+      EXPECT_EQ (v.pose_kept, inputs[i].pose_known) << v.name;
+      if (inputs[i].pose_known)
+        EXPECT_TRUE (v.pose.matrix () == inputs[i].known_pose.matrix ()) << v.name << ": a kept pose moved";
+      const auto error = poseError (result, v.pose, views[0].view.pose, views[i].view.pose);
+      EXPECT_LT (error.rotation_deg, 0.5) << v.name;
+      EXPECT_LT (error.translation_resolutions, 2.0) << v.name;
+    }
+  }
+}
+
+// A model extended with new views: the views of known poses are one group from the start, no pair
+// among them is ranked or registered, and the new views are registered to them in their frame.
+TEST (MultiviewTensorRegistration, KnownPosesAreKeptAndOnlyNewViewsRegistered)
+{
+  std::vector<bool> known (12, true);
+  known[0] = known[7] = false;  // the lowest index is new: the frame is still the known views'
+  const auto inputs = ringWithKnownPoses (known);
+  const MultiviewRegistrationResult result = MultiviewTensorRegistration ().compute (inputs);
+  expectKeptAndRegistered (result, inputs);
+  EXPECT_EQ (result.candidates.size (), 2u * 10u + 1u) << "only pairs with a new view are ranked";
+  for (const auto& a : result.attempts)
+    EXPECT_TRUE (!known[a.first] || !known[a.second]) << a.first << "-" << a.second << " were both known";
+  EXPECT_EQ (result.reference, 1) << "the lowest known view's frame";
+  for (const auto& p : result.pairs)
+    EXPECT_TRUE (!known[p.first] || !known[p.second]) << "the global step paired two fixed views";
+  EXPECT_FALSE (result.pairs.empty ());
+}
+
+TEST (MultiviewTensorRegistration, KnownPosesAreKeptInOrderedSearch)
+{
+  std::vector<bool> known (12, false);
+  for (int i = 0; i < 6; ++i)
+    known[i] = true;
+  const auto inputs = ringWithKnownPoses (known);
+  MultiviewRegistrationParams params;
+  params.search = ViewSearch::ORDERED;
+  MultiviewTensorRegistration registration;
+  registration.setParams (params);
+  const MultiviewRegistrationResult result = registration.compute (inputs);
+  expectKeptAndRegistered (result, inputs);
+  for (int i = 0; i < 6; ++i)
+    EXPECT_EQ (result.views[i].references_tried, 0u) << "a known view was registered";
+}
+
+// Every pose known: nothing is ranked or registered, and nothing moves.
+TEST (MultiviewTensorRegistration, EveryPoseKnownRegistersNothing)
+{
+  const auto inputs = ringWithKnownPoses (std::vector<bool> (12, true));
+  const MultiviewRegistrationResult result = MultiviewTensorRegistration ().compute (inputs);
+  expectKeptAndRegistered (result, inputs);
+  EXPECT_TRUE (result.candidates.empty ());
+  EXPECT_TRUE (result.attempts.empty ());
+  EXPECT_TRUE (result.pairs.empty ());
+}
+
+TEST (MultiviewTensorRegistration, KnownPoseThatIsNotRigidIsRefused)
+{
+  auto inputs = ringWithKnownPoses (std::vector<bool> (12, false));
+  inputs[3].pose_known = true;
+  inputs[3].known_pose.linear () *= 2.0;
+  EXPECT_THROW (MultiviewTensorRegistration ().compute (inputs), pcl::BadArgumentException);
+}

@@ -264,3 +264,59 @@ TEST (ScanVolumetricIntegration, ExampleObjectFromItsSyntheticViews)
   // ... and covers the whole object: no part of it is missing from the model.
   EXPECT_LT (*std::max_element (coverage_error.begin (), coverage_error.end ()), 2.0);
 }
+
+// Views added to a kept volume give the voxels, and so the surface, of integrating every view at once
+// at the same voxel size: a view's distances reach only blocks near its own surface.
+TEST (ScanVolumetricIntegration, ViewsAddedToAKeptVolumeGiveTheSameSurface)
+{
+  const auto views = sphereViews (kSphere, pcl::makeDefaultViewDirections (), smallCamera ());
+  const std::size_t first = views.size () / 2;
+  pcl::ScanVolumetricIntegration all;
+  all.setInputViews (views);
+  pcl::ScanMesh at_once;
+  all.reconstruct (at_once);
+  EXPECT_FALSE (all.getVolume ()) << "the voxels are kept only when asked";
+
+  pcl::ScanVolumetricIntegration before;
+  before.setVoxelSize (all.getReport ().voxel_size);
+  before.setKeepVolume (true);
+  before.setInputViews (std::vector<pcl::IntegrationView> (views.begin (), views.begin () + first));
+  pcl::ScanMesh part;
+  before.reconstruct (part);
+  const pcl::IntegrationVolume::ConstPtr kept = before.getVolume ();
+  ASSERT_TRUE (kept && kept->isConsistent ());
+  EXPECT_EQ (kept->views, first);
+
+  pcl::ScanVolumetricIntegration after;
+  after.setInitialVolume (kept);
+  after.setInputViews (std::vector<pcl::IntegrationView> (views.begin () + first, views.end ()));
+  pcl::ScanMesh extended;
+  after.reconstruct (extended);
+  EXPECT_EQ (after.getReport ().views, views.size ());
+  EXPECT_EQ (after.getReport ().initial_views, first);
+  EXPECT_DOUBLE_EQ (after.getReport ().voxel_size, all.getReport ().voxel_size);
+  EXPECT_EQ (after.getReport ().blocks, all.getReport ().blocks);
+  EXPECT_EQ (after.getReport ().observed_voxels, all.getReport ().observed_voxels);
+  // The same surface: the vertices in another order (blocks are listed in another order), each within
+  // float rounding of one of the other mesh's.
+  ASSERT_EQ (extended.cloud->size (), at_once.cloud->size ());
+  ASSERT_EQ (extended.polygons.size (), at_once.polygons.size ());
+  pcl::PointMeshDistance distance;
+  distance.setMesh (at_once);
+  double worst = 0.0;
+  for (const auto& p : *extended.cloud)
+    worst = std::max (worst, distance.distance (p.getVector3fMap ().cast<double> ()));
+  EXPECT_LT (worst, 1e-4 * all.getReport ().voxel_size);
+}
+
+TEST (ScanVolumetricIntegration, InconsistentInitialVolumeIsRefused)
+{
+  auto volume = std::make_shared<pcl::IntegrationVolume> ();
+  volume->voxel_size = 0.001;
+  volume->blocks.emplace_back (0, 0, 0);
+  volume->distance.resize (10);
+  pcl::ScanVolumetricIntegration integration;
+  integration.setInitialVolume (volume);
+  pcl::ScanMesh model;
+  EXPECT_THROW (integration.reconstruct (model), pcl::InvalidScanException);
+}

@@ -96,6 +96,23 @@ TEST (StanfordConf, RoundTripIsExact)
   std::remove (path.c_str ());
 }
 
+// pcl_tensor_model --keep-poses: a .conf names views by file name, wherever the files are.
+TEST (StanfordConf, EntriesAreMatchedToFilesByName)
+{
+  std::vector<pcl::io::StanfordConfEntry> entries (3);
+  entries[0].file = "b.ply";
+  entries[1].file = "sub/a.ply";
+  entries[2].file = "gone.ply";
+  const std::vector<int> matched = pcl::io::confEntriesOfFiles (entries, {"/data/a.ply", "c.ply", "x/y/b.ply"});
+  EXPECT_EQ (matched, (std::vector<int>{1, -1, 0}));
+  EXPECT_THROW (pcl::io::confEntriesOfFiles (entries, {"one/a.ply", "two/a.ply"}), pcl::BadArgumentException)
+      << "two views of one name: a pose could belong to either";
+  EXPECT_EQ (pcl::io::confEntriesOfFiles (entries, {"one/c.ply", "two/c.ply"}), (std::vector<int>{-1, -1}))
+      << "two views of a name no entry gives are not in question";
+  entries[2].file = "other/b.ply";
+  EXPECT_THROW (pcl::io::confEntriesOfFiles (entries, {"a.ply"}), pcl::BadArgumentException);
+}
+
 TEST (StanfordConf, FailsLoudlyOnBadFiles)
 {
   EXPECT_THROW (pcl::io::loadStanfordConf ("/nonexistent/x.conf"), pcl::IOException);

@@ -5,7 +5,8 @@ Renders synthetic sets of N views of one mesh (the 26-view set, rings at 0 and +
 poles, plus N - 26 views from random directions, all shuffled), runs pcl_tensor_model on each as a
 user would (one process, every core, --json), and reports wall time, peak memory, the pairs fully
 registered and the pose errors against the rendered ground truth. The real Stanford sets run
-shuffled too. With --cache it also times a re-run and a run with one view added.
+shuffled too. With --cache it also times a re-run and a run with one view added: all views registered
+again (with the cache), and the model extended (--keep-poses: the old views keep their poses).
 
     python3 bench/scale/scale_benchmark.py --bin build/apps --sizes 26,52,104,208 --real --cache
 """
@@ -82,14 +83,14 @@ def run_timed(cmd):
     return float(last[0]), float(last[1]) / 1024.0, proc.stdout, proc.returncode, proc.stderr
 
 
-def run_model(bin_dir, views, out_dir, extra=()):
-    model = os.path.join(out_dir, "model.ply")
+def run_model(bin_dir, views, out_dir, extra=(), name="model"):
+    model = os.path.join(out_dir, name + ".ply")
     cmd = [os.path.join(bin_dir, "pcl_tensor_model")] + views + ["-o", model, "--json"] + list(extra)
     wall, peak, out, code, err = run_timed(cmd)
     if code not in (0, 3):
         sys.exit("pcl_tensor_model failed (%d): %s" % (code, err[-2000:]))
     report = json.loads(out)
-    return wall, peak, report, os.path.join(out_dir, "model.conf")
+    return wall, peak, report, os.path.join(out_dir, name + ".conf")
 
 
 def score(report, truth, estimate_conf, centre):
@@ -167,14 +168,23 @@ def cache_runs(args, rows):
     n = max(r["views"] for r in rows if r["set"] == "synthetic" and r["views"] < 200)
     folder, views, truth, centre = synthetic(args, n, args.out)
     cache = os.path.join(folder, "cache")
-    first, _, _, _ = run_model(args.bin, views[:-1], folder, ["--cache", cache])
+    first, _, _, first_conf = run_model(args.bin, views[:-1], folder, ["--cache", cache])
     again, _, _, _ = run_model(args.bin, views[:-1], folder, ["--cache", cache])
+    base_conf = os.path.join(folder, "before_adding.conf")
+    shutil.copyfile(first_conf, base_conf)
+    extended, _, extended_report, extended_conf = run_model(args.bin, views, folder,
+                                                            ["--cache", cache, "--keep-poses", base_conf], "extended")
     added, _, report, conf = run_model(args.bin, views, folder, ["--cache", cache])
+    stages = lambda r: {k: round(v / 1000.0, 2) for k, v in r["timings_ms"].items()}
     record = {"set": "cache", "views": n, "first_run_s": round(first, 2), "re_run_s": round(again, 2),
               "re_run_ratio": round(again / first, 3), "one_view_added_s": round(added, 2),
               "registered_after_adding": report["registered"],
               "pairs_scored_after_adding": report["candidate_pairs_scored"], "candidate_pairs": report["candidate_pairs"],
-              "one_view_added_stages_s": {k: round(v / 1000.0, 2) for k, v in report["timings_ms"].items()}}
+              "one_view_added_stages_s": stages(report),
+              "one_view_added_extending_s": round(extended, 2), "extending_ratio": round(extended / first, 3),
+              "registered_extending": extended_report["registered"],
+              "within_0.5deg_2dres_extending": score(extended_report, truth, extended_conf, centre)[2],
+              "one_view_added_extending_stages_s": stages(extended_report)}
     rows.append(record)
     print(json.dumps(record), flush=True)
 

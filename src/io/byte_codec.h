@@ -31,6 +31,16 @@ namespace pcl
             return *this;
           }
 
+          /** \a count numbers at once, as put() writes each. */
+          template <typename T> ByteWriter&
+          putArray (const T* values, std::size_t count)
+          {
+            static_assert (std::is_arithmetic<T>::value, "putArray() writes numbers");
+            if (count > 0)
+              out_.append (reinterpret_cast<const char*> (values), count * sizeof (T));
+            return *this;
+          }
+
           /** A length (u64), then the bytes. */
           ByteWriter&
           putString (std::string_view s)
@@ -67,6 +77,19 @@ namespace pcl
             std::memcpy (&value, bytes_.data () + pos_, sizeof (T));
             pos_ += sizeof (T);
             return value;
+          }
+
+          /** \a count numbers at once into \a values, as get() reads each; false (for good) past the end. */
+          template <typename T> bool
+          getArray (T* values, std::size_t count)
+          {
+            static_assert (std::is_arithmetic<T>::value, "getArray() reads numbers");
+            if (!fits (count, sizeof (T)))
+              return false;
+            if (count > 0)
+              std::memcpy (values, bytes_.data () + pos_, count * sizeof (T));
+            pos_ += count * sizeof (T);
+            return true;
           }
 
           /** True when \a count elements of \a element_size bytes can still be read; false (for good) otherwise. */

@@ -89,6 +89,7 @@ namespace pcl
       j["reference"] = v.reference;
       j["component"] = v.component;
       j["pose"] = toJson (Eigen::Matrix4d (v.pose.matrix ()));
+      j["pose_kept"] = v.pose_kept;
       j["hypotheses_tried"] = v.pairwise.hypotheses_tried;
       j["references_tried"] = v.references_tried;
       j["globally_refused"] = v.globally_refused;
@@ -132,7 +133,7 @@ namespace pcl
     toJson (const pcl::VolumetricIntegrationReport& r)
     {
       return {{"voxel_size", r.voxel_size}, {"voxels", r.voxels}, {"bytes", r.volume_bytes},
-              {"views", r.views}, {"components", r.components}, {"removed_components", r.removed_components},
+              {"views", r.views}, {"views_kept", r.initial_views}, {"components", r.components}, {"removed_components", r.removed_components},
               {"timings_ms", {{"allocate", r.allocate_ms}, {"integrate", r.integrate_ms}, {"extract", r.extract_ms},
                               {"cleanup", r.cleanup_ms}}}};
     }

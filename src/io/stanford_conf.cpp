@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace pcl
@@ -76,6 +77,50 @@ namespace pcl
     isStanfordConfFileName (const std::string& file)
     {
       return !file.empty () && file.find_first_of (" \t\r\n\v\f") == std::string::npos;
+    }
+
+    namespace
+    {
+      std::string
+      fileName (const std::string& path)
+      {
+        const auto slash = path.find_last_of ("/\\");
+        return slash == std::string::npos ? path : path.substr (slash + 1);
+      }
+
+      /** Name -> index of \a names by file name, refusing a name given twice. */
+      std::map<std::string, int>
+      indexByFileName (const std::vector<std::string>& names, const char* what)
+      {
+        std::map<std::string, int> index;
+        for (std::size_t i = 0; i < names.size (); ++i)
+          if (!index.emplace (fileName (names[i]), static_cast<int> (i)).second)
+            PCL_TENSOR_THROW (pcl::BadArgumentException, "two " << what << " are named '" << fileName (names[i])
+                              << "': a .conf pose could belong to either");
+        return index;
+      }
+    }
+
+    std::vector<int>
+    confEntriesOfFiles (const std::vector<StanfordConfEntry>& entries, const std::vector<std::string>& files)
+    {
+      std::vector<std::string> entry_names;
+      for (const auto& e : entries)
+        entry_names.push_back (e.file);
+      const std::map<std::string, int> entry_of = indexByFileName (entry_names, ".conf entries");
+      std::vector<int> matched (files.size (), -1);
+      std::map<int, std::size_t> file_of;
+      for (std::size_t i = 0; i < files.size (); ++i)
+      {
+        const auto it = entry_of.find (fileName (files[i]));
+        if (it == entry_of.end ())
+          continue;
+        if (!file_of.emplace (it->second, i).second)
+          PCL_TENSOR_THROW (pcl::BadArgumentException, "two views are named '" << it->first << "': the .conf pose of that "
+                            "name could belong to either");
+        matched[i] = it->second;
+      }
+      return matched;
     }
 
     void

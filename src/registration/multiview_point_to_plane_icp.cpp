@@ -166,6 +166,21 @@ namespace pcl
         }
       };
 
+      /** Which views are in one of \a pairs. \throw pcl::BadArgumentException on a pair that is not two given views */
+      std::vector<char>
+      viewsInPairs (const std::vector<const ScanMesh*>& views, const ViewPairs& pairs, const char* caller)
+      {
+        const int n = static_cast<int> (views.size ());
+        std::vector<char> in_pair (views.size (), 0);
+        for (const auto& p : pairs)
+        {
+          if (p.first < 0 || p.first >= n || p.second < 0 || p.second >= n || p.first == p.second || !views[p.first] || !views[p.second])
+            PCL_TENSOR_THROW (BadArgumentException, caller << ": pair (" << p.first << ", " << p.second << ") is not a pair of two given views");
+          in_pair[p.first] = in_pair[p.second] = 1;
+        }
+        return in_pair;
+      }
+
       Eigen::Affine3d
       smallMotion (const Vector6d& x)
       {
@@ -200,23 +215,29 @@ namespace pcl
                               int fixed, double resolution, const MultiviewIcpParams& params,
                               const MultiviewIcpProgress& progress, unsigned threads)
     {
+      if (fixed < 0 || fixed >= static_cast<int> (views.size ()))
+        PCL_TENSOR_THROW (BadArgumentException, "multiview ICP needs a fixed view among the views");
+      std::vector<bool> still (views.size (), false);
+      still[fixed] = true;
+      return multiviewPointToPlaneIcp (views, initial, pairs, still, resolution, params, progress, threads);
+    }
+
+    MultiviewIcpResult
+    multiviewPointToPlaneIcp (const std::vector<const ScanMesh*>& views, const ViewPoses& initial, const ViewPairs& pairs,
+                              const std::vector<bool>& fixed, double resolution, const MultiviewIcpParams& params,
+                              const MultiviewIcpProgress& progress, unsigned threads)
+    {
       const int n = static_cast<int> (views.size ());
-      if (initial.size () != views.size () || fixed < 0 || fixed >= n)
-        PCL_TENSOR_THROW (BadArgumentException, "multiview ICP needs one pose per view and a fixed view among them");
+      if (initial.size () != views.size () || fixed.size () != views.size () || std::find (fixed.begin (), fixed.end (), true) == fixed.end ())
+        PCL_TENSOR_THROW (BadArgumentException, "multiview ICP needs one pose and one flag per view, and a fixed view among them");
       if (!(resolution > 0.0) || !(params.max_distance > 0.0) || params.max_iterations < 0)
         PCL_TENSOR_THROW (BadArgumentException, "multiview ICP needs a positive resolution and pairing distance");
-      std::vector<bool> in_pair (n, false);
-      for (const auto& p : pairs)
-      {
-        if (p.first < 0 || p.first >= n || p.second < 0 || p.second >= n || p.first == p.second || !views[p.first] || !views[p.second])
-          PCL_TENSOR_THROW (BadArgumentException, "multiview ICP: pair (" << p.first << ", " << p.second << ") is not a pair of two given views");
-        in_pair[p.first] = in_pair[p.second] = true;
-      }
-      // Unknowns: 6 per view that is in a pair and is not the fixed one.
+      const std::vector<char> in_pair = viewsInPairs (views, pairs, "multiview ICP");
+      // Unknowns: 6 per view that is in a pair and is not fixed.
       std::vector<int> var (n, -1);
       int unknowns = 0;
       for (int i = 0; i < n; ++i)
-        if (in_pair[i] && i != fixed)
+        if (in_pair[i] && !fixed[i])
           var[i] = unknowns++;
 
       std::vector<IcpView> icp_views (n);
@@ -274,7 +295,8 @@ namespace pcl
           break;
       }
       for (int i = 0; i < n; ++i)
-        result.poses[i] = Eigen::Translation3d (centre) * centred[i];
+        if (var[i] >= 0)
+          result.poses[i] = Eigen::Translation3d (centre) * centred[i];  // the others keep theirs to the bit
       return result;
     }
 
@@ -283,20 +305,32 @@ namespace pcl
                           double resolution, double max_distance, double min_fraction, int sample_points, unsigned threads,
                           std::vector<double>* fractions)
     {
+      if (!use.empty () && use.size () != views.size ())
+        PCL_TENSOR_THROW (BadArgumentException, "findOverlappingViews needs one flag per view");
+      ViewPairs candidates;
+      for (std::size_t i = 0; i < views.size (); ++i)
+        for (std::size_t j = i + 1; j < views.size (); ++j)
+          if (views[i] && views[j] && (use.empty () || (use[i] && use[j])))
+            candidates.emplace_back (static_cast<int> (i), static_cast<int> (j));
+      return selectOverlappingPairs (views, poses, candidates, resolution, max_distance, min_fraction, sample_points, threads,
+                                   fractions);
+    }
+
+    ViewPairs
+    selectOverlappingPairs (const std::vector<const ScanMesh*>& views, const ViewPoses& poses, const ViewPairs& candidates,
+                          double resolution, double max_distance, double min_fraction, int sample_points, unsigned threads,
+                          std::vector<double>* fractions)
+    {
       const int n = static_cast<int> (views.size ());
-      if (poses.size () != views.size () || (!use.empty () && use.size () != views.size ()))
-        PCL_TENSOR_THROW (BadArgumentException, "findOverlappingViews needs one pose (and one flag) per view");
+      if (poses.size () != views.size ())
+        PCL_TENSOR_THROW (BadArgumentException, "findOverlappingViews needs one pose per view");
+      const std::vector<char> used = viewsInPairs (views, candidates, "selectOverlappingPairs");
       std::vector<IcpView> icp_views (n);
       pcl::detail::parallelFor (static_cast<std::size_t> (n), threads, [&] (std::size_t i) {
-        if (views[i] && (use.empty () || use[i]))
+        if (used[i])
           icp_views[i] = makeIcpView (*views[i], false, sample_points, max_distance * resolution);
       });
       const float radius = static_cast<float> (max_distance * resolution);
-      ViewPairs candidates;
-      for (int i = 0; i < n; ++i)
-        for (int j = i + 1; j < n; ++j)
-          if (icp_views[i].mesh && icp_views[j].mesh)
-            candidates.emplace_back (i, j);
       std::vector<double> overlap (candidates.size (), 0.0);
       pcl::detail::parallelFor (candidates.size (), threads, [&] (std::size_t k) {
           const int i = candidates[k].first, j = candidates[k].second;

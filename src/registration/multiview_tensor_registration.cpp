@@ -95,11 +95,11 @@ namespace pcl
     }
 
     std::vector<pcl::IntegrationView>
-    registeredIntegrationViews (const MultiviewRegistrationResult& result, int component)
+    registeredIntegrationViews (const MultiviewRegistrationResult& result, int component, bool kept_poses)
     {
       std::vector<pcl::IntegrationView> views;
       for (const auto& v : result.views)
-        if (v.registered && v.prepared && v.component == component)
+        if (v.registered && v.prepared && v.component == component && (kept_poses || !v.pose_kept))
         {
           pcl::IntegrationView r;
           r.mesh = pcl::ScanMesh::ConstPtr (v.prepared, &v.prepared->fine);
@@ -230,9 +230,9 @@ namespace pcl
       class OrderedRegistration
       {
         public:
-          OrderedRegistration (const MultiviewRegistrationParams& params, const ViewPairs& pairs, const Views& tensors, unsigned threads,
-                               MultiviewRegistrationResult& result)
-            : params_ (params), pairs_ (pairs), tensors_ (tensors), threads_ (threads), result_ (result),
+          OrderedRegistration (const MultiviewRegistrationParams& params, const ViewPairs& pairs, const Views& tensors,
+                               const detail::KnownPoses& known, unsigned threads, MultiviewRegistrationResult& result)
+            : params_ (params), pairs_ (pairs), tensors_ (tensors), known_ (known), threads_ (threads), result_ (result),
               verification_ (result.dimensions, result.resolution, params.global_verification)
           {}
 
@@ -247,10 +247,15 @@ namespace pcl
             if (pending.empty ())
               return;
             const std::size_t total = pending.size ();
-            accept (pending.front (), -1, Eigen::Affine3d::Identity ());
+            // The views of known poses first, else the first view, define the common frame.
+            const auto given = std::stable_partition (pending.begin (), pending.end (), [&] (int v) { return known_.known[v]; });
+            if (given == pending.begin ())
+              accept (pending.front (), -1, Eigen::Affine3d::Identity ());
+            for (auto it = pending.begin (); it != given; ++it)
+              accept (*it, -1, known_.poses[*it], true);
             result_.reference = pending.front ();
-            pending.erase (pending.begin ());
-            report (progress, MultiviewStage::PAIRWISE, 1, total);
+            pending.erase (pending.begin (), std::max (given, pending.begin () + 1));
+            report (progress, MultiviewStage::PAIRWISE, registered_.size (), total);
             for (bool progressed = true; progressed && !pending.empty ();)
             {
               progressed = false;
@@ -369,10 +374,11 @@ namespace pcl
           }
 
           void
-          accept (int view, int reference, const Eigen::Affine3d& pose)
+          accept (int view, int reference, const Eigen::Affine3d& pose, bool kept = false)
           {
             ViewRegistrationStatus& status = result_.views[view];
             status.registered = true;
+            status.pose_kept = kept;
             status.reference = reference;
             status.pairwise_pose = status.pose = pose;
             verification_.addView (*status.prepared->fine.cloud, pose * meshToView (status));
@@ -382,6 +388,7 @@ namespace pcl
           const MultiviewRegistrationParams& params_;
           const ViewPairs& pairs_;
           const Views& tensors_;
+          const detail::KnownPoses& known_;
           const unsigned threads_;
           MultiviewRegistrationResult& result_;
           GlobalVerification verification_;
@@ -394,11 +401,11 @@ namespace pcl
         * overlap many others, and the global step's cost grows with its pairs, its accuracy hardly. */
       ViewPairs
       mostOverlapping (const MultiviewRegistrationParams& params, const std::vector<const ScanMesh*>& meshes,
-                       const ViewPoses& poses, const std::vector<bool>& member, double resolution, unsigned threads)
+                       const ViewPoses& poses, const ViewPairs& candidates, double resolution, unsigned threads)
       {
         std::vector<double> fractions;
-        const ViewPairs found = findOverlappingViews (meshes, poses, member, resolution, params.global.max_distance,
-                                                      params.min_overlap, 500, threads, &fractions);
+        const ViewPairs found = selectOverlappingPairs (meshes, poses, candidates, resolution, params.global.max_distance,
+                                                        params.min_overlap, 500, threads, &fractions);
         if (params.max_overlap_pairs <= 0)
           return found;
         std::vector<std::vector<std::pair<double, std::size_t>>> of_view (meshes.size ());
@@ -421,17 +428,19 @@ namespace pcl
       }
 
       /** The pairs of the global step within one component: registration's own, the loop, given
-        * pairs, found overlaps. */
+        * pairs, found overlaps; of those, the pairs with a view that moves (not \a fixed). */
       ViewPairs
       globalPairs (const MultiviewRegistrationParams& params, const ViewPairs& given, const std::vector<const ScanMesh*>& meshes,
-                   const ViewPoses& poses, const MultiviewRegistrationResult& result, int component, unsigned threads)
+                   const ViewPoses& poses, const std::vector<bool>& fixed, const MultiviewRegistrationResult& result,
+                   int component, unsigned threads)
       {
         std::set<std::pair<int, int>> pairs;
         std::vector<bool> member (result.views.size ());
         for (std::size_t i = 0; i < result.views.size (); ++i)
           member[i] = result.views[i].registered && result.views[i].component == component;
+        const auto useful = [&] (int a, int b) { return a != b && member[a] && member[b] && !(fixed[a] && fixed[b]); };
         const auto add = [&] (int a, int b) {
-          if (a >= 0 && b >= 0 && a != b && member[a] && member[b])
+          if (a >= 0 && b >= 0 && useful (a, b))
             pairs.insert ({std::min (a, b), std::max (a, b)});
         };
         int first = -1, last = -1;
@@ -445,19 +454,32 @@ namespace pcl
         for (const auto& p : given)
           add (p.first, p.second);
         if (params.min_overlap > 0.0)
-          for (const auto& p : mostOverlapping (params, meshes, poses, member, result.resolution, threads))
+        {
+          ViewPairs candidates;
+          for (int a = 0; a < static_cast<int> (member.size ()); ++a)
+            for (int b = a + 1; b < static_cast<int> (member.size ()); ++b)
+              if (useful (a, b))
+                candidates.emplace_back (a, b);
+          for (const auto& p : mostOverlapping (params, meshes, poses, candidates, result.resolution, threads))
             add (p.first, p.second);
+        }
         return ViewPairs (pairs.begin (), pairs.end ());
       }
 
-      /** The view whose frame is the component's: the one registered to no other. */
-      int
-      componentReference (const MultiviewRegistrationResult& result, int component)
+      /** The views of one component that the global step keeps still: those of kept poses, else the
+        * one registered to no other (its frame is the component's). */
+      std::vector<bool>
+      fixedViews (const MultiviewRegistrationResult& result, int component)
       {
+        std::vector<bool> fixed (result.views.size (), false);
+        bool any = false;
         for (std::size_t i = 0; i < result.views.size (); ++i)
+          if (result.views[i].registered && result.views[i].component == component && result.views[i].pose_kept)
+            any = fixed[i] = true;
+        for (std::size_t i = 0; i < result.views.size () && !any; ++i)
           if (result.views[i].registered && result.views[i].component == component && result.views[i].reference < 0)
-            return static_cast<int> (i);
-        return -1;
+            any = fixed[i] = true;
+        return fixed;
       }
 
       /** Stage 4: the registered views of each component moved together (Section 5, module 5 of Fig. 9);
@@ -477,7 +499,8 @@ namespace pcl
               meshes[i] = &result.views[i].prepared->fine;
               poses[i] = result.views[i].pairwise_pose * meshToView (result.views[i]);
             }
-          const ViewPairs pairs = globalPairs (params, given, meshes, poses, result, c, threads);
+          const std::vector<bool> fixed = fixedViews (result, c);
+          const ViewPairs pairs = globalPairs (params, given, meshes, poses, fixed, result, c, threads);
           result.pairs.insert (result.pairs.end (), pairs.begin (), pairs.end ());
           if (pairs.empty ())
             continue;
@@ -485,10 +508,10 @@ namespace pcl
             if (c == 0)
               report (progress, MultiviewStage::GLOBAL, static_cast<std::size_t> (it), static_cast<std::size_t> (max_it));
           };
-          MultiviewIcpResult global = multiviewPointToPlaneIcp (meshes, poses, pairs, componentReference (result, c),
-                                                                 result.resolution, params.global, icp_progress, threads);
+          MultiviewIcpResult global = multiviewPointToPlaneIcp (meshes, poses, pairs, fixed, result.resolution, params.global,
+                                                                 icp_progress, threads);
           for (std::size_t i = 0; i < result.views.size (); ++i)
-            if (result.views[i].registered && result.views[i].component == c)
+            if (result.views[i].registered && result.views[i].component == c && !fixed[i])
               result.views[i].pose = global.poses[i] * meshToView (result.views[i]).inverse ();
           if (c == 0)
             result.global = std::move (global);
@@ -515,8 +538,29 @@ namespace pcl
       checkInputs (const std::vector<MultiviewInput>& views)
       {
         for (const auto& v : views)
+        {
           if (v.view && !v.view->scan)
             PCL_TENSOR_THROW (BadArgumentException, "view " << v.name << " is given prepared without meshes");
+          if (v.pose_known && !(v.known_pose.matrix ().allFinite () && v.known_pose.linear ().isUnitary (1e-6) &&
+                                v.known_pose.linear ().determinant () > 0.0))
+            PCL_TENSOR_THROW (BadArgumentException, "view " << v.name << " is given a known pose that is not a rigid motion");
+        }
+      }
+
+      /** The usable views whose poses are given. */
+      detail::KnownPoses
+      knownPoses (const std::vector<MultiviewInput>& inputs, const Views& tensors)
+      {
+        detail::KnownPoses known;
+        known.known.assign (inputs.size (), false);
+        known.poses.assign (inputs.size (), Eigen::Affine3d::Identity ());
+        for (std::size_t i = 0; i < inputs.size (); ++i)
+          if (inputs[i].pose_known && tensors[i])
+          {
+            known.known[i] = true;
+            known.poses[i] = inputs[i].known_pose;
+          }
+        return known;
       }
 
       void
@@ -549,9 +593,10 @@ namespace pcl
       result.timings.tensors_ms = watch.getTime ();
 
       watch.reset ();
+      const detail::KnownPoses known = knownPoses (views, tensors);
       if (params_.search == ViewSearch::ORDERED)
       {
-        OrderedRegistration (params_, pairs_, tensors, threads_, result).run (progress_);
+        OrderedRegistration (params_, pairs_, tensors, known, threads_, result).run (progress_);
         orderedComponents (result);
       }
       else
@@ -559,7 +604,7 @@ namespace pcl
         const ViewPairRegistration registration = pair_registration_ ? pair_registration_ :
             [] (int, int, const TensorView::ConstPtr& model, const TensorView::ConstPtr& scene, const ObjectDimensions& dims,
                 const TensorRegistrationParams& params) { return registerTensorViews (model, scene, dims, params); };
-        detail::registerRankedViews (params_, pairs_, tensors, registration, pair_scores_, threads_, progress_, result);
+        detail::registerRankedViews (params_, pairs_, tensors, known, registration, pair_scores_, threads_, progress_, result);
       }
       result.timings.pairwise_ms = watch.getTime ();
 

@@ -73,7 +73,8 @@ namespace pcl
         {
           public:
             RankedRegistration (const MultiviewRegistrationParams& params, const std::vector<TensorView::ConstPtr>& views,
-                                const ViewPairRegistration& registration, unsigned threads, MultiviewRegistrationResult& result)
+                                const KnownPoses& known, const ViewPairRegistration& registration, unsigned threads,
+                                MultiviewRegistrationResult& result)
               : params_ (params), views_ (views), registration_ (registration), threads_ (threads), result_ (result),
                 group_of_ (views.size (), -1), pose_ (views.size (), Eigen::Affine3d::Identity ()), failed_ (views.size (), 0),
                 tree_ (views.size ())
@@ -87,8 +88,10 @@ namespace pcl
                 // Poses are between the views' own frames; the meshes may be centred on origin.
                 checks[i]->addView (*views[i]->scan->fine.cloud, Eigen::Affine3d (Eigen::Translation3d (views[i]->origin)));
               });
+              if (known.any ())
+                joinKnown (known, checks);
               for (std::size_t i = 0; i < views.size (); ++i)
-                if (checks[i])
+                if (checks[i] && group_of_[i] < 0)
                 {
                   group_of_[i] = static_cast<int> (groups_.size ());
                   Group g;
@@ -96,12 +99,19 @@ namespace pcl
                   g.check = std::move (checks[i]);
                   groups_.push_back (g);
                 }
-              usable_ = groups_.size ();
+              usable_ = 0;
+              for (const auto& g : groups_)
+                usable_ += g.members.size ();
             }
 
             void
             run (const ViewPairs& allowed, const ViewPairScoreCache& scores, const MultiviewProgress& progress)
             {
+              if (largestGroup () == usable_)
+              {
+                assignComponents ();  // nothing to register: every view's pose is known
+                return;
+              }
               pcl::StopWatch ranking;
               ViewPairScoreMemo known = scores ? scores (result_.dimensions, params_.pairwise, params_.ranking) : ViewPairScoreMemo ();
               known.keep = [this, keep = known.keep] (const std::vector<ViewPairCandidate>& scored) {
@@ -109,7 +119,7 @@ namespace pcl
                 if (keep)
                   keep (scored);
               };
-              result_.candidates = ViewPairRanking (views_, params_.pairwise, params_.ranking).rank (allowed, threads_, known);
+              result_.candidates = ViewPairRanking (views_, params_.pairwise, params_.ranking).rank (pairsToRank (allowed), threads_, known);
               result_.timings.ranking_ms = ranking.getTime ();
               TensorRegistrationParams quick = params_.pairwise;
               const int budget = params_.first_pass_hypotheses;
@@ -135,6 +145,50 @@ namespace pcl
             }
 
           private:
+            /** The views of given poses as one group, in the frame of their poses (its reference: the
+              * lowest index among them); their own checks are merged into the group's. */
+            void
+            joinKnown (const KnownPoses& known, std::vector<std::shared_ptr<GlobalVerification>>& checks)
+            {
+              Group g;
+              g.known = true;
+              g.check = std::make_shared<GlobalVerification> (result_.dimensions, result_.resolution, params_.global_verification);
+              for (std::size_t i = 0; i < views_.size (); ++i)
+                if (checks[i] && known.known[i])
+                {
+                  g.check->merge (*checks[i], known.poses[i]);
+                  checks[i].reset ();
+                  g.members.push_back (static_cast<int> (i));
+                  group_of_[i] = static_cast<int> (groups_.size ());
+                  pose_[i] = known.poses[i];
+                  kept_[i] = true;
+                }
+              if (!g.members.empty ())
+                groups_.push_back (g);
+            }
+
+            /** The pairs to rank: \a allowed (empty: all), less those within the group of known poses. */
+            ViewPairs
+            pairsToRank (const ViewPairs& allowed) const
+            {
+              const bool known = !groups_.empty () && groups_.front ().known;
+              if (!known)
+                return allowed;
+              ViewPairs pairs;
+              const auto add = [&] (int a, int b) {
+                if (group_of_[a] < 0 || group_of_[b] < 0 || !(groups_[group_of_[a]].known && groups_[group_of_[b]].known))
+                  pairs.emplace_back (a, b);
+              };
+              if (!allowed.empty ())
+                for (const auto& p : allowed)
+                  add (p.first, p.second);
+              else
+                for (int a = 0; a < static_cast<int> (views_.size ()); ++a)
+                  for (int b = a + 1; b < static_cast<int> (views_.size ()); ++b)
+                    add (a, b);
+              return pairs;
+            }
+
             /** A registered pair and the time it took on its core. */
             struct Registered
             {
@@ -208,6 +262,7 @@ namespace pcl
             {
               std::vector<int> members;  ///< members.front () is the group's reference view
               std::shared_ptr<GlobalVerification> check;
+              bool known = false;        ///< it holds the views of known poses (its frame is theirs)
             };
 
             std::size_t
@@ -333,8 +388,8 @@ namespace pcl
                 return;
               }
               result_.attempts.back ().joined = true;
-              // The group whose reference has the lower index keeps its frame.
-              if (ga.members.front () < gb.members.front ())
+              // The group of known poses keeps its frame, else the one whose reference has the lower index.
+              if (ga.known || (!gb.known && ga.members.front () < gb.members.front ()))
                 join (a, b, move, report, excess);
               else
                 join (b, a, move.inverse (), JoinTree::invertedTransform (report), excess);
@@ -348,6 +403,7 @@ namespace pcl
               Group& into = groups_[group_of_[parent]];
               Group& from = groups_[group_of_[child]];
               into.check->merge (*from.check, move);
+              into.known = into.known || from.known;
               tree_.reroot (child, result_.views);
               tree_.link (child, parent);
               result_.views[child].pairwise = report;
@@ -371,7 +427,7 @@ namespace pcl
             {
               std::vector<const Group*> order;
               for (const auto& g : groups_)
-                if (g.members.size () > 1)
+                if (g.members.size () > 1 || g.known)
                   order.push_back (&g);
               if (order.empty () && !groups_.empty ())
                 order.push_back (&groups_.front ());
@@ -384,6 +440,7 @@ namespace pcl
                 {
                   ViewRegistrationStatus& s = result_.views[v];
                   s.registered = true;
+                  s.pose_kept = kept_[v];
                   s.component = static_cast<int> (c);
                   s.reference = tree_.parent (v);
                   s.pairwise_pose = s.pose = pose_[v];
@@ -409,16 +466,17 @@ namespace pcl
             std::size_t batches_ = 0;                   ///< batches registered so far
             std::vector<std::size_t> last_batch_ = std::vector<std::size_t> (views_.size (), 0);  ///< per view: the last batch it was in
             std::map<std::pair<int, int>, int> retried_;  ///< pairs registered per two groups
+            std::vector<bool> kept_ = std::vector<bool> (views_.size (), false);  ///< per view: its pose was given
         };
       }
 
       void
       registerRankedViews (const MultiviewRegistrationParams& params, const ViewPairs& allowed,
-                           const std::vector<TensorView::ConstPtr>& views, const ViewPairRegistration& registration,
-                           const ViewPairScoreCache& scores, unsigned threads, const MultiviewProgress& progress,
-                           MultiviewRegistrationResult& result)
+                           const std::vector<TensorView::ConstPtr>& views, const KnownPoses& known,
+                           const ViewPairRegistration& registration, const ViewPairScoreCache& scores, unsigned threads,
+                           const MultiviewProgress& progress, MultiviewRegistrationResult& result)
       {
-        RankedRegistration (params, views, registration, threads, result).run (allowed, scores, progress);
+        RankedRegistration (params, views, known, registration, threads, result).run (allowed, scores, progress);
       }
     }
   }

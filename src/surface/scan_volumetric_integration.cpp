@@ -165,6 +165,44 @@ namespace pcl
       });
     }
 
+    static_assert (IntegrationVolume::kBlockVoxels == detail::kBlockVoxels, "an IntegrationVolume block is a TsdfBlock");
+
+    /** The first blocks of \a volume, reserved from \a initial in its order, take its voxels. */
+    void
+    restoreVoxels (const IntegrationVolume& initial, TsdfBlockVolume& volume)
+    {
+      for (std::size_t b = 0; b < initial.blocks.size (); ++b)
+      {
+        detail::TsdfBlock& block = volume.block (b);
+        const std::size_t first = b * IntegrationVolume::kBlockVoxels;
+        for (std::size_t v = 0; v < block.size (); ++v)
+          block[v] = {initial.distance[first + v], initial.weight[first + v]};
+      }
+    }
+
+    /** A copy of \a volume's voxels, to add views to later. */
+    IntegrationVolume::Ptr
+    keptVoxels (const TsdfBlockVolume& volume, std::size_t views, double resolution_sum)
+    {
+      auto kept = std::make_shared<IntegrationVolume> ();
+      kept->voxel_size = volume.voxelSize ();
+      kept->views = views;
+      kept->resolution_sum = resolution_sum;
+      kept->blocks.reserve (volume.blockCount ());
+      kept->distance.reserve (volume.blockCount () * IntegrationVolume::kBlockVoxels);
+      kept->weight.reserve (kept->distance.capacity ());
+      for (std::size_t b = 0; b < volume.blockCount (); ++b)
+      {
+        kept->blocks.push_back (volume.blockCoordinates (b));
+        for (const auto& v : volume.block (b))
+        {
+          kept->distance.push_back (v.distance);
+          kept->weight.push_back (v.weight);
+        }
+      }
+      return kept;
+    }
+
     /** Union-find root with path halving. */
     std::uint32_t
     findRoot (std::vector<std::uint32_t>& parent, std::uint32_t v)
@@ -275,26 +313,44 @@ namespace pcl
   }
 
   void
-  ScanVolumetricIntegration::reconstruct (ScanMesh& model)
+  ScanVolumetricIntegration::checkInput () const
   {
-    report_ = VolumetricIntegrationReport ();
-    if (views_.empty ())
+    if (views_.empty () && !initial_)
       PCL_TENSOR_THROW (InvalidScanException, "volumetric integration: no views");
     for (std::size_t i = 0; i < views_.size (); ++i)
       if (!views_[i].mesh || views_[i].mesh->polygons.empty ())
         PCL_TENSOR_THROW (InvalidScanException, "volumetric integration: view " << i << " has no triangle");
+    if (initial_ && !initial_->isConsistent ())
+      PCL_TENSOR_THROW (InvalidScanException, "volumetric integration: the initial volume's sizes do not agree");
+  }
+
+  void
+  ScanVolumetricIntegration::reconstruct (ScanMesh& model)
+  {
+    report_ = VolumetricIntegrationReport ();
+    volume_.reset ();
+    checkInput ();
     std::vector<double> resolutions (views_.size ());
     pcl::detail::parallelFor (views_.size (), threads_, [&] (std::size_t i) { resolutions[i] = meshResolution (*views_[i].mesh); });
-    report_.views = views_.size ();
-    report_.resolution = std::accumulate (resolutions.begin (), resolutions.end (), 0.0) / static_cast<double> (views_.size ());
-    report_.voxel_size = params_.voxel_size > 0.0 ? params_.voxel_size : params_.voxel_size_resolutions * report_.resolution;
+    // An initial volume keeps its voxel size; its views count in the mean d_res.
+    report_.initial_views = initial_ ? initial_->views : 0;
+    report_.views = views_.size () + report_.initial_views;
+    const double resolution_sum = std::accumulate (resolutions.begin (), resolutions.end (), initial_ ? initial_->resolution_sum : 0.0);
+    report_.resolution = report_.views > 0 ? resolution_sum / static_cast<double> (report_.views) : 0.0;
+    report_.voxel_size = initial_ ? initial_->voxel_size : params_.voxel_size > 0.0 ? params_.voxel_size :
+                         params_.voxel_size_resolutions * report_.resolution;
     const float truncation = static_cast<float> (params_.truncation_voxels * report_.voxel_size);
 
     pcl::StopWatch watch;
     const std::size_t max_blocks = params_.max_memory_bytes / TsdfBlockVolume::bytesPerBlock ();
     TsdfBlockVolume volume (report_.voxel_size, max_blocks);
+    if (initial_)
+      for (const auto& block : initial_->blocks)
+        volume.reserveBlock (block);
     reserveBlocks (views_, truncation + report_.voxel_size, max_blocks, threads_, volume);
     volume.allocate ();
+    if (initial_)
+      restoreVoxels (*initial_, volume);
     report_.blocks = volume.blockCount ();
     report_.voxels = report_.blocks * detail::kBlockVoxels;
     report_.volume_bytes = volume.memoryBytes ();
@@ -321,6 +377,8 @@ namespace pcl
     for (std::size_t b = 0; b < volume.blockCount (); ++b)
       for (const auto& v : volume.block (b))
         report_.observed_voxels += v.weight > 0.0f ? 1 : 0;
+    if (keep_volume_)
+      volume_ = keptVoxels (volume, report_.views, resolution_sum);
     report_.integrate_ms = watch.getTime ();
 
     watch.reset ();

@@ -67,6 +67,14 @@ add_test(NAME app_model_cache_rerun
     -DOUT=${MODEL_OUT}/cache_rerun -P ${CMAKE_CURRENT_SOURCE_DIR}/model_cache.cmake)
 set_tests_properties(app_model_cache_rerun PROPERTIES FIXTURES_REQUIRED register_views TIMEOUT 900)
 
+# --keep-poses: a model extended with a view; the old views keep their poses, their voxels from the cache.
+add_test(NAME app_model_keep_poses
+  COMMAND ${CMAKE_COMMAND} -DAPP=${MODEL} "-DVIEWS=${REG_VIEWS}/view_00.ply;${REG_VIEWS}/view_01.ply;${REG_VIEWS}/view_02.ply"
+    -DNEW=${REG_VIEWS}/view_03.ply -DOUT=${MODEL_OUT}/keep_poses -P ${CMAKE_CURRENT_SOURCE_DIR}/model_keep_poses.cmake)
+set_tests_properties(app_model_keep_poses PROPERTIES FIXTURES_REQUIRED register_views TIMEOUT 900)
+pcl_tensor_case(app_model_missing_keep_poses 2 COMMAND ${MODEL} ${VIEW0} ${VIEW1} -o ${MODEL_OUT}/k.ply
+                --keep-poses /nonexistent/poses.conf)
+
 # Two views of each of two objects: two models (the second beside the first as NAME_part2), exit 3 and
 # one line per view of the second model naming it.
 add_test(NAME app_model_two_objects_two_models

@@ -49,6 +49,14 @@ namespace pcl
     bool
     isStanfordConfFileName (const std::string& file);
 
+    /** \brief For each of \a files, the index of the entry that names it, or -1: entries and files are
+      * matched by their names without folders, as pcl_tensor_model writes a .conf of its views.
+      * \throw pcl::BadArgumentException when two entries have the same name, or two files the name of an
+      * entry (which one a pose belongs to would be a guess)
+      */
+    std::vector<int>
+    confEntriesOfFiles (const std::vector<StanfordConfEntry>& entries, const std::vector<std::string>& files);
+
     /** \brief Write entries as bmesh lines, with enough digits (max_digits10) that loadStanfordConf()
       * gives back the same doubles.
       * \throw pcl::IOException when the file cannot be written or a file name contains white space

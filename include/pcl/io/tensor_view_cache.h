@@ -38,7 +38,9 @@ namespace pcl
       /** A whole run of pcl_tensor_model (ModelRunRecord), keyed by modelRunKey(). */
       RUN = 4,
       /** Ranking scores of view pairs (PairScoreCache), each keyed by pairScoreKey(). */
-      SCORES = 5
+      SCORES = 5,
+      /** The voxels of a model (IntegrationVolume), keyed by integrationVolumeKey(). */
+      VOLUME = 6
     };
 
     /** \brief What a lookup found. Only VALID gives data; any other state leaves the output untouched.

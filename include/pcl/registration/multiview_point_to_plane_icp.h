@@ -81,6 +81,16 @@ namespace pcl
                               int fixed, double resolution, const MultiviewIcpParams& params,
                               const MultiviewIcpProgress& progress = {}, unsigned threads = 1);
 
+    /** \brief The same with several views that do not move, e.g. those of a model being extended,
+      * whose poses were settled before: only the others move, and \a fixed[i] views keep \a initial[i]
+      * exactly.
+      * \throw pcl::BadArgumentException as above, or when no view is fixed
+      */
+    MultiviewIcpResult
+    multiviewPointToPlaneIcp (const std::vector<const ScanMesh*>& views, const ViewPoses& initial, const ViewPairs& pairs,
+                              const std::vector<bool>& fixed, double resolution, const MultiviewIcpParams& params,
+                              const MultiviewIcpProgress& progress = {}, unsigned threads = 1);
+
     /** \brief The pairs of views that overlap under the given poses: at least \a min_fraction of the
       * sampled points of the smaller view have a point of the other within \a max_distance d_res.
       * \param[in] views fine meshes
@@ -96,6 +106,15 @@ namespace pcl
       */
     ViewPairs
     findOverlappingViews (const std::vector<const ScanMesh*>& views, const ViewPoses& poses, const std::vector<bool>& use,
+                          double resolution, double max_distance, double min_fraction, int sample_points = 500,
+                          unsigned threads = 1, std::vector<double>* fractions = nullptr);
+
+    /** \brief findOverlappingViews() over the given \a candidates only (pairs of two given views, in any order),
+      * e.g. the pairs that involve a view added to views settled before.
+      * \return the candidates that overlap, in the order given
+      */
+    ViewPairs
+    selectOverlappingPairs (const std::vector<const ScanMesh*>& views, const ViewPoses& poses, const ViewPairs& candidates,
                           double resolution, double max_distance, double min_fraction, int sample_points = 500,
                           unsigned threads = 1, std::vector<double>* fractions = nullptr);
   }

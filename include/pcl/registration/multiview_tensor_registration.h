@@ -30,6 +30,13 @@ namespace pcl
         * (default): then \a cloud is meshed. Its tensors are used when they were computed with the D
         * of this registration. */
       TensorView::ConstPtr view;
+      /** True when the view's pose is known, e.g. a view of a model being extended with new views:
+        * the views with known poses are joined from the start, in the frame of their poses, and keep
+        * their poses through the global step; only the others are registered, to them and to each
+        * other. False (default): the view is registered. */
+      bool pose_known = false;
+      /** The known pose: the view's own frame -> the common frame (as ViewRegistrationStatus::pose). */
+      Eigen::Affine3d known_pose = Eigen::Affine3d::Identity ();
     };
 
     /** \brief How multiview registration chooses the pairs it registers. */
@@ -143,6 +150,8 @@ namespace pcl
       Eigen::Affine3d pose = Eigen::Affine3d::Identity ();
       /** The same pose from pairwise registration alone, before the global step. */
       Eigen::Affine3d pairwise_pose = Eigen::Affine3d::Identity ();
+      /** The pose was given (MultiviewInput::pose_known) and kept, not registered here. */
+      bool pose_kept = false;
       /** The accepted pairwise registration (or the last one tried when none was accepted). */
       TensorRegistrationReport pairwise;
       /** References tried, and locally verified hypotheses refused by global verification over all of them. */
@@ -201,11 +210,12 @@ namespace pcl
 
     /** \brief The registered views of one component as volumetric integration takes them: each view's
       * fine mesh M_i in its own frame (sharing ownership of the view's prepared scan) and its pose
-      * after the global step.
+      * after the global step; without the views of kept poses when \a kept_poses is false (e.g. when
+      * they are in a volume integrated before, ScanVolumetricIntegration::setInitialVolume()).
       * \ingroup registration
       */
     std::vector<pcl::IntegrationView>
-    registeredIntegrationViews (const MultiviewRegistrationResult& result, int component = 0);
+    registeredIntegrationViews (const MultiviewRegistrationResult& result, int component = 0, bool kept_poses = true);
 
     /** \brief Automatic registration of ordered views (Mian et al., Sections 4.2 and 5; Fig. 9,
       * modules 1-5): every view is meshed and reduced and its tensors computed once, with D from all

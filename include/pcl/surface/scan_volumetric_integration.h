@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pcl/common/scan_mesh.h>
+#include <pcl/surface/integration_volume.h>
 #include <pcl/PolygonMesh.h>
 #include <Eigen/Geometry>
 
@@ -57,7 +58,8 @@ namespace pcl
   {
     double voxel_size = 0.0;           ///< the voxel edge used, in metres
     double resolution = 0.0;           ///< mean d_res of the views, in metres
-    std::size_t views = 0;             ///< views integrated
+    std::size_t views = 0;             ///< views integrated (with those of the initial volume)
+    std::size_t initial_views = 0;     ///< of them, those integrated before (setInitialVolume())
     std::size_t blocks = 0;            ///< allocated 8^3 voxel blocks
     std::size_t voxels = 0;            ///< allocated voxels (blocks * 512)
     std::size_t observed_voxels = 0;   ///< voxels with weight > 0
@@ -116,9 +118,24 @@ namespace pcl
       void setInputViews (const std::vector<IntegrationView>& views) { views_ = views; }
       const std::vector<IntegrationView>& getInputViews () const { return views_; }
 
+      /** \brief Voxels of views integrated before (getVolume() of an earlier reconstruct() with the same
+        * parameters), or null (default): the input views are added to them, at their voxel size, and the
+        * surface is extracted from all. A view's distances reach only blocks near its own surface, so
+        * the voxels are those of integrating every view at once, up to the rounding of the order. */
+      void setInitialVolume (const IntegrationVolume::ConstPtr& volume) { initial_ = volume; }
+      const IntegrationVolume::ConstPtr& getInitialVolume () const { return initial_; }
+
+      /** \brief Keep the voxels after reconstruct(), for getVolume() (default: false; they are freed). */
+      void setKeepVolume (bool keep) { keep_volume_ = keep; }
+      bool getKeepVolume () const { return keep_volume_; }
+
+      /** \brief The voxels of the last reconstruct() when setKeepVolume(true), else null. */
+      const IntegrationVolume::ConstPtr& getVolume () const { return volume_; }
+
       /** \brief Integrate the views and extract the surface in the world frame.
         * \param[out] model vertices with outward normals, and triangles; viewpoint left at its default
-        * \throw InvalidScanException when there is no view, a mesh is null or has no triangle
+        * \throw InvalidScanException when there is no view and no initial volume, a mesh is null or has
+        * no triangle, or the initial volume's sizes do not agree
         * \throw MemoryLimitException when the volume would exceed getMaxMemoryBytes(), before allocating it
         */
       void reconstruct (ScanMesh& model);
@@ -130,9 +147,15 @@ namespace pcl
       const VolumetricIntegrationReport& getReport () const { return report_; }
 
     private:
+      /** \throw InvalidScanException as reconstruct() */
+      void checkInput () const;
+
       VolumetricIntegrationParams params_;
       std::vector<IntegrationView> views_;
       VolumetricIntegrationReport report_;
       unsigned threads_ = 0;
+      IntegrationVolume::ConstPtr initial_;
+      bool keep_volume_ = false;
+      IntegrationVolume::ConstPtr volume_;
   };
 }
