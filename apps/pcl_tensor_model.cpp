@@ -376,14 +376,16 @@ namespace
     const bool any_kept = std::any_of (result.views.begin (), result.views.end (),
                                    [c] (const auto& v) { return v.registered && v.component == c && v.pose_kept; });
     if (cache && any_kept)
-      integration.setInitialVolume (pcl::io::loadIntegrationVolume (*cache, volumeKey (result, prepared, c, true, kept_poses, o.integration)));
+      integration.setInitialVolume (pcl::io::loadIntegrationVolume (*cache, pcl::io::integrationVolumeId (o.keep_poses),
+                                                                    volumeKey (result, prepared, c, true, kept_poses, o.integration)));
     integration.setKeepVolume (cache && c == 0);
     integration.setInputViews (pcl::registration::registeredIntegrationViews (result, c, !integration.getInitialVolume ()));
     integration.reconstruct (m.mesh);
     m.volume = integration.getReport ();
     m.views = m.volume.views;
     if (integration.getVolume ())
-      pcl::io::saveIntegrationVolume (*cache, volumeKey (result, prepared, c, false, kept_poses, o.integration), *integration.getVolume ());
+      pcl::io::saveIntegrationVolume (*cache, pcl::io::integrationVolumeId (m.conf),
+                                      volumeKey (result, prepared, c, false, kept_poses, o.integration), *integration.getVolume ());
     return m;
   }
 

@@ -63,14 +63,15 @@ namespace
       fs::path dir_;
       std::unique_ptr<pcl::io::TensorViewCache> cache_;
       const pcl::io::TensorViewCacheKey key_{0x1234, 0x5678};
+      const std::string id_ = pcl::io::integrationVolumeId ("model.conf");
   };
 }
 
 TEST_F (IntegrationVolumeCacheTest, RoundTripIsExact)
 {
   const pcl::IntegrationVolume volume = randomVolume (3);
-  pcl::io::saveIntegrationVolume (*cache_, key_, volume);
-  const auto loaded = pcl::io::loadIntegrationVolume (*cache_, key_);
+  pcl::io::saveIntegrationVolume (*cache_, id_, key_, volume);
+  const auto loaded = pcl::io::loadIntegrationVolume (*cache_, id_, key_);
   ASSERT_TRUE (loaded);
   EXPECT_EQ (loaded->voxel_size, volume.voxel_size);
   EXPECT_EQ (loaded->views, volume.views);
@@ -84,49 +85,65 @@ TEST_F (IntegrationVolumeCacheTest, EmptyVolumeRoundTrips)
 {
   pcl::IntegrationVolume volume;
   volume.voxel_size = 0.5;
-  pcl::io::saveIntegrationVolume (*cache_, key_, volume);
-  const auto loaded = pcl::io::loadIntegrationVolume (*cache_, key_);
+  pcl::io::saveIntegrationVolume (*cache_, id_, key_, volume);
+  const auto loaded = pcl::io::loadIntegrationVolume (*cache_, id_, key_);
   ASSERT_TRUE (loaded);
   EXPECT_TRUE (loaded->blocks.empty ());
 }
 
 TEST_F (IntegrationVolumeCacheTest, MissingStaleCutOrDamagedEntriesAreNeverUsed)
 {
-  EXPECT_FALSE (pcl::io::loadIntegrationVolume (*cache_, key_)) << "missing";
-  pcl::io::saveIntegrationVolume (*cache_, key_, randomVolume (2));
+  EXPECT_FALSE (pcl::io::loadIntegrationVolume (*cache_, id_, key_)) << "missing";
+  pcl::io::saveIntegrationVolume (*cache_, id_, key_, randomVolume (2));
   const fs::path file = entryFile ();
   ASSERT_FALSE (file.empty ());
-  EXPECT_FALSE (pcl::io::loadIntegrationVolume (*cache_, {key_.source, key_.preparation + 1}))
-      << "another key names another file: missing";
+  EXPECT_FALSE (pcl::io::loadIntegrationVolume (*cache_, id_, {key_.source, key_.preparation + 1}))
+      << "the entry holds another key's voxels: stale";
   {
     // Another key's entry copied over this one: stale.
     const pcl::io::TensorViewCacheKey other{9, 9};
-    pcl::io::saveIntegrationVolume (*cache_, other, randomVolume (1));
+    pcl::io::saveIntegrationVolume (*cache_, "volume-other", other, randomVolume (1));
     fs::path other_file;
     for (const auto& e : fs::directory_iterator (dir_))
       if (e.path () != file && e.path ().string ().find (".volume.tvc") != std::string::npos)
         other_file = e.path ();
     fs::copy_file (other_file, file, fs::copy_options::overwrite_existing);
-    EXPECT_FALSE (pcl::io::loadIntegrationVolume (*cache_, key_)) << "stale";
+    EXPECT_FALSE (pcl::io::loadIntegrationVolume (*cache_, id_, key_)) << "stale";
   }
-  pcl::io::saveIntegrationVolume (*cache_, key_, randomVolume (2));
+  pcl::io::saveIntegrationVolume (*cache_, id_, key_, randomVolume (2));
   const auto size = fs::file_size (file);
   {
     std::fstream f (file, std::ios::in | std::ios::out | std::ios::binary);
     f.seekp (static_cast<std::streamoff> (size / 2));
     f.put ('\x5a');
   }
-  EXPECT_FALSE (pcl::io::loadIntegrationVolume (*cache_, key_)) << "a flipped byte";
-  pcl::io::saveIntegrationVolume (*cache_, key_, randomVolume (2));
+  EXPECT_FALSE (pcl::io::loadIntegrationVolume (*cache_, id_, key_)) << "a flipped byte";
+  pcl::io::saveIntegrationVolume (*cache_, id_, key_, randomVolume (2));
   fs::resize_file (file, size - 100);
-  EXPECT_FALSE (pcl::io::loadIntegrationVolume (*cache_, key_)) << "truncated";
+  EXPECT_FALSE (pcl::io::loadIntegrationVolume (*cache_, id_, key_)) << "truncated";
+}
+
+// One entry per model's .conf: a run of the same model replaces its voxels, another model keeps its own.
+TEST_F (IntegrationVolumeCacheTest, EachModelKeepsOneEntry)
+{
+  EXPECT_EQ (pcl::io::integrationVolumeId ("model.conf"), pcl::io::integrationVolumeId ("./model.conf"));
+  EXPECT_NE (pcl::io::integrationVolumeId ("model.conf"), pcl::io::integrationVolumeId ("other.conf"));
+  pcl::io::saveIntegrationVolume (*cache_, id_, key_, randomVolume (1));
+  pcl::io::saveIntegrationVolume (*cache_, id_, {1, 1}, randomVolume (2));
+  std::size_t entries = 0;
+  for (const auto& e : fs::directory_iterator (dir_))
+    entries += e.path ().string ().find (".volume.tvc") != std::string::npos ? 1 : 0;
+  EXPECT_EQ (entries, 1u);
+  EXPECT_FALSE (pcl::io::loadIntegrationVolume (*cache_, id_, key_)) << "replaced";
+  ASSERT_TRUE (pcl::io::loadIntegrationVolume (*cache_, id_, {1, 1}));
+  EXPECT_EQ (pcl::io::loadIntegrationVolume (*cache_, id_, {1, 1})->blocks.size (), 2u);
 }
 
 TEST_F (IntegrationVolumeCacheTest, InconsistentVolumeIsNotWritten)
 {
   pcl::IntegrationVolume volume = randomVolume (2);
   volume.weight.pop_back ();
-  EXPECT_THROW (pcl::io::saveIntegrationVolume (*cache_, key_, volume), pcl::BadArgumentException);
+  EXPECT_THROW (pcl::io::saveIntegrationVolume (*cache_, id_, key_, volume), pcl::BadArgumentException);
 }
 
 // The key follows every view's key and every bit of every pose, and the integration settings.

@@ -170,10 +170,8 @@ def cache_runs(args, rows):
     cache = os.path.join(folder, "cache")
     first, _, _, first_conf = run_model(args.bin, views[:-1], folder, ["--cache", cache])
     again, _, _, _ = run_model(args.bin, views[:-1], folder, ["--cache", cache])
-    base_conf = os.path.join(folder, "before_adding.conf")
-    shutil.copyfile(first_conf, base_conf)
     extended, _, extended_report, extended_conf = run_model(args.bin, views, folder,
-                                                            ["--cache", cache, "--keep-poses", base_conf], "extended")
+                                                            ["--cache", cache, "--keep-poses", first_conf], "extended")
     added, _, report, conf = run_model(args.bin, views, folder, ["--cache", cache])
     stages = lambda r: {k: round(v / 1000.0, 2) for k, v in r["timings_ms"].items()}
     record = {"set": "cache", "views": n, "first_run_s": round(first, 2), "re_run_s": round(again, 2),

@@ -8,17 +8,16 @@
 #include "byte_codec.h"
 #include "cache_entry_file.h"
 
+#include <filesystem>
+
 namespace pcl
 {
   namespace io
   {
-    namespace
+    std::string
+    integrationVolumeId (const std::string& poses_file)
     {
-      std::string
-      entryId (const TensorViewCacheKey& key)
-      {
-        return "volume-" + toHex (key.source) + toHex (key.preparation);
-      }
+      return "volume-" + toHex (hashBytes (std::filesystem::weakly_canonical (std::filesystem::absolute (poses_file)).string ()));
     }
 
     TensorViewCacheKey
@@ -42,7 +41,8 @@ namespace pcl
     }
 
     void
-    saveIntegrationVolume (const TensorViewCache& cache, const TensorViewCacheKey& key, const IntegrationVolume& volume)
+    saveIntegrationVolume (const TensorViewCache& cache, const std::string& id, const TensorViewCacheKey& key,
+                           const IntegrationVolume& volume)
     {
       if (!volume.isConsistent ())
         PCL_TENSOR_THROW (pcl::BadArgumentException, "saveIntegrationVolume: the volume's sizes do not agree");
@@ -52,14 +52,14 @@ namespace pcl
       static_assert (sizeof (Eigen::Vector3i) == 3 * sizeof (std::int32_t), "blocks are written as packed coordinates");
       w.putArray (volume.blocks.empty () ? nullptr : volume.blocks.front ().data (), 3 * volume.blocks.size ());
       w.putArray (volume.distance.data (), volume.distance.size ()).putArray (volume.weight.data (), volume.weight.size ());
-      writeFileAtomically (cache.entryPath (entryId (key), CacheEntryKind::VOLUME),
+      writeFileAtomically (cache.entryPath (id, CacheEntryKind::VOLUME),
                            detail::encodeCacheEntry (CacheEntryKind::VOLUME, key, w.bytes ()));
     }
 
     IntegrationVolume::Ptr
-    loadIntegrationVolume (const TensorViewCache& cache, const TensorViewCacheKey& key)
+    loadIntegrationVolume (const TensorViewCache& cache, const std::string& id, const TensorViewCacheKey& key)
     {
-      const auto entry = detail::readCacheEntry (cache.entryPath (entryId (key), CacheEntryKind::VOLUME), CacheEntryKind::VOLUME, key);
+      const auto entry = detail::readCacheEntry (cache.entryPath (id, CacheEntryKind::VOLUME), CacheEntryKind::VOLUME, key);
       if (entry.state != CacheEntryState::VALID)
         return nullptr;
       detail::ByteReader r (entry.payload);
