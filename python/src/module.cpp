@@ -154,7 +154,8 @@ namespace
   }
 
   ModelResult
-  buildModel (const py::sequence& views, bool loop, const py::object& viewpoints, const py::object& pairs, py::kwargs kwargs)
+  buildModel (const py::sequence& views, bool loop, const py::object& viewpoints, const py::object& pairs,
+              const py::object& known_poses, py::kwargs kwargs)
   {
     if (py::isinstance<py::str> (views) || py::len (views) < 2)
       throw py::value_error ("build_model needs a sequence of at least two views");
@@ -177,9 +178,19 @@ namespace
     if (!pairs.is_none ())
       registration.setPairs (pairs.cast<pcl::registration::ViewPairs> ());
 
+    if (!known_poses.is_none () && py::len (known_poses) != py::len (views))
+      throw py::value_error ("known_poses must give one entry (a 4 x 4 pose or None) per view");
     std::vector<pcl::registration::MultiviewInput> inputs;
     for (const auto& in : modelInputs (views, viewpoints))
+    {
       inputs.push_back ({in.name, in.cloud, in.viewpoint, nullptr});
+      const py::object pose = known_poses.is_none () ? py::object (py::none ()) : py::object (known_poses[py::int_ (inputs.size () - 1)]);
+      if (!pose.is_none ())
+      {
+        inputs.back ().pose_known = true;
+        inputs.back ().known_pose.matrix () = pose.cast<Eigen::Matrix4d> ();
+      }
+    }
     pcl::registration::MultiviewRegistrationResult result;
     pcl::ScanMesh mesh;
     {
@@ -279,9 +290,11 @@ PYBIND11_MODULE (pcl_tensor, m)
          "object_dimensions=(X, Y, Z) and threads (0, the default: every core). Returns a RegistrationResult; registered is False when no pose could be\n"
          "verified, or two distinct poses could (ambiguous).");
   m.def ("build_model", &buildModel, py::arg ("views"), py::arg ("loop") = false, py::arg ("viewpoints") = py::none (),
-         py::arg ("pairs") = py::none (),
+         py::arg ("pairs") = py::none (), py::arg ("known_poses") = py::none (),
          "Register views (paths or arrays, each overlapping one before it, or with pairs=[(i, j), ...]) and\n"
          "integrate them into one mesh, as pcl_tensor_model does. loop=True closes a turntable's loop.\n"
+         "known_poses: one 4 x 4 pose (view -> common frame) or None per view; the views with a pose keep\n"
+         "it, and only the others are registered to them (pcl_tensor_model --keep-poses).\n"
          "Keyword parameters are ModelParams' fields (pairwise=dict(...) for the pairwise ones), plus\n"
          "integration=dict(...) for IntegrationParams, and threads (0, the default: every core). Returns a\n"
          "ModelResult.");

@@ -30,3 +30,16 @@ def test_a_view_of_another_object_is_left_out(ring_views, tmp_path):
     assert model.status == ["registered", "not_registered", "registered"]
     assert model.poses[1] is None
     assert model.names[1] == "view 1"
+
+
+def test_views_of_known_poses_keep_them_and_new_views_join_them(ring_views):
+    paths = [ring_views.path(i) for i in range(4)]
+    known = [ring_views.truth(0, i) for i in range(3)] + [None]
+    model = pcl_tensor.build_model(paths, viewpoints=[(0.0, 0.0, 0.0)] * 4, known_poses=known)
+    assert model.status == ["registered"] * 4
+    for i in range(3):
+        assert np.array_equal(model.poses[i], known[i]), "a known pose moved"
+    truth = ring_views.truth(0, 3)
+    assert rotation_deg(np.linalg.inv(truth) @ model.poses[3]) < 0.5
+    assert np.linalg.norm(model.poses[3][:3, 3] - truth[:3, 3]) < 2.0 * model.report["resolution"]
+    assert [v["pose_kept"] for v in model.report["views"]] == [True, True, True, False]

@@ -74,9 +74,9 @@ namespace pcl
             for (int x = blo.x (); x <= bhi.x (); ++x)
             {
               const Eigen::Vector3i block (x, y, z);
-              if (block.cwiseAbs ().maxCoeff () > TsdfBlockVolume::kMaxBlockCoordinate)
+              if (!TsdfBlockVolume::inRange (block))
               {
-                blocks.push_back (block);
+                blocks.push_back (block);  // reserveBlock () refuses it, with the message
                 return blocks;
               }
               if (!seen.insert (TsdfBlockVolume::key (block)).second)

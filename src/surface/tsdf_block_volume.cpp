@@ -82,7 +82,7 @@ namespace pcl
     void
     TsdfBlockVolume::reserveBlock (const Eigen::Vector3i& block)
     {
-      if (block.cwiseAbs ().maxCoeff () > kMaxBlockCoordinate)
+      if (!inRange (block))
         PCL_TENSOR_THROW (MemoryLimitException, "volumetric integration: the views span more than "
                           << kMaxBlockCoordinate << " blocks of " << kBlockSide << " voxels of " << voxel_size_
                           << " m from the origin; use larger voxels");

@@ -58,6 +58,9 @@ namespace pcl
         /** Estimated bytes per block: the voxels and one index entry. */
         static std::size_t bytesPerBlock ();
 
+        /** True when \a block's coordinates are within kMaxBlockCoordinate (reserveBlock() refuses others). */
+        static bool inRange (const Eigen::Vector3i& block) { return block.cwiseAbs ().maxCoeff () <= kMaxBlockCoordinate; }
+
         /** The index key of a block: one-to-one for coordinates within kMaxBlockCoordinate. */
         static std::uint64_t key (const Eigen::Vector3i& block);
 
