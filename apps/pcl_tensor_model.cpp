@@ -18,6 +18,7 @@
 #include <pcl/io/scan_mesh_io.h>
 #include <pcl/io/recorded_pair_registration.h>
 #include <pcl/io/range_scan_io.h>
+#include <pcl/io/scan_sensor_cache.h>
 #include <pcl/io/registration_report_json.h>
 #include <pcl/io/stanford_conf.h>
 #include <pcl/io/view_pairs_io.h>
@@ -142,17 +143,42 @@ namespace
     return o;
   }
 
-  /** View \a i of the command line: its file, cloud and sensor (--viewpoint or from the file). */
-  pcl::io::MultiviewInputLoader
-  viewLoader (const std::vector<std::string>& files, int argc, char** argv)
+  /** How the tools choose a scan's sensor besides its file: the --viewpoint option as given (empty without it). */
+  std::string
+  sensorChoice (int argc, char** argv)
   {
-    return [&files, argc, argv] (std::size_t i) {
+    std::string how;
+    parse_argument (argc, argv, "--viewpoint", how);
+    return how;
+  }
+
+  /** View \a i of the command line: its file, cloud and sensor (--viewpoint or from the file); with a
+    * cache, the sensor is kept there, so that a later run needs not read the scan (sensorLookup()). */
+  pcl::io::MultiviewInputLoader
+  viewLoader (const std::vector<std::string>& files, int argc, char** argv, const pcl::io::TensorViewCache* cache)
+  {
+    return [&files, argc, argv, cache] (std::size_t i) {
       const pcl::io::RangeScan scan = pcl_tensor_tools::loadScan (files[i], argc, argv);
       pcl::registration::MultiviewInput view;
       view.name = files[i];
       view.viewpoint = scan.viewpoint;
       view.cloud = scan.cloud;
+      if (cache)
+        pcl::io::saveScanSensor (*cache, pcl::io::viewIdOf (files[i]),
+                                 pcl::io::scanSensorKey (pcl::io::hashFileContents (files[i]), sensorChoice (argc, argv)),
+                                 scan.viewpoint);
       return view;
+    };
+  }
+
+  /** View \a i's file and the sensor an earlier run read it with, from the cache. */
+  pcl::io::MultiviewInputLookup
+  sensorLookup (const std::vector<std::string>& files, int argc, char** argv, const pcl::io::TensorViewCache& cache)
+  {
+    return [&files, &cache, how = sensorChoice (argc, argv)] (std::size_t i, pcl::registration::MultiviewInput& view) {
+      view.name = files[i];
+      return pcl::io::loadScanSensor (cache, pcl::io::viewIdOf (files[i]),
+                                      pcl::io::scanSensorKey (pcl::io::hashFileContents (files[i]), how), view.viewpoint);
     };
   }
 
@@ -428,8 +454,10 @@ namespace
                                                                    std::size_t n) {
       progress.update (pcl::registration::toString (stage), done, n);
     };
-    const auto prepared = pcl::io::prepareMultiviewInputs (o.views.size (), viewLoader (o.views, argc, argv), o.registration,
-                                                           o.threads, cache.get (), inputs, show);
+    const auto prepared = pcl::io::prepareMultiviewInputs (o.views.size (), viewLoader (o.views, argc, argv, cache.get ()),
+                                                           o.registration, o.threads, cache.get (), inputs, show,
+                                                           cache ? sensorLookup (o.views, argc, argv, *cache)
+                                                                 : pcl::io::MultiviewInputLookup ());
     kept.applyTo (inputs);
     // Pairs from the cache (or registered and kept there), and from results computed elsewhere first.
     pcl::registration::ViewPairRegistration pairs = [] (int, int, const auto& model, const auto& scene, const auto& dims,

@@ -8,6 +8,7 @@
 #include <pcl/io/content_hash.h>
 #include <pcl/io/cached_tensor_view.h>
 #include <pcl/io/range_grid_ply.h>
+#include <pcl/io/scan_sensor_cache.h>
 #include <pcl/io/tensor_view_cache.h>
 #include <pcl/registration/registration_error.h>
 #include <pcl/registration/tensor_registration.h>
@@ -976,4 +977,63 @@ TEST_F (TensorViewCacheTest, CachedViewsRegisterAsTheFirstRunDid)
   EXPECT_EQ (std::distance (fs::directory_iterator (dir_ / "cache"), fs::directory_iterator ()),
              static_cast<std::ptrdiff_t> (3 * 2 + results[0].attempts.size ()))
       << "one meshes and one tensors entry per view, one entry per pair registered";
+}
+
+// A view whose sensor an earlier read kept, and whose meshes are cached under the key that sensor gives,
+// is not loaded again: the loader is not called, and the run gives the same poses.
+TEST_F (TensorViewCacheTest, ViewsOfAKnownSensorAreNotReadAgain)
+{
+  pcl::SyntheticViewParams render;
+  render.camera.width = render.camera.height = 200;
+  const auto rendered = pcl::renderSyntheticViews (pcl::makeExampleObject (), pcl::makeRingViewDirections (3, 30.0), render);
+  std::vector<pcl::registration::MultiviewInput> files;
+  for (std::size_t i = 0; i < rendered.size (); ++i)
+  {
+    const std::string path = (dir_ / ("view" + std::to_string (i) + ".ply")).string ();
+    pcl::io::saveRangeGridPLY (path, *rendered[i].view.cloud);
+    files.push_back ({path, rendered[i].view.cloud, rendered[i].view.viewpoint, nullptr});
+  }
+  const TensorViewCache cache ((dir_ / "cache").string ());
+  const auto sensorKey = [&] (std::size_t i) { return pcl::io::scanSensorKey (pcl::io::hashFileContents (files[i].name), ""); };
+  std::atomic<int> loads{0};
+  const pcl::io::MultiviewInputLoader load = [&] (std::size_t i) {
+    ++loads;
+    pcl::io::saveScanSensor (cache, pcl::io::viewIdOf (files[i].name), sensorKey (i), files[i].viewpoint);
+    return files[i];
+  };
+  pcl::ScanViewpoint shifted = files[1].viewpoint;
+  shifted.sensor_pose.translation ().x () += 0.01;
+  const auto lookup = [&] (bool wrong_sensor) -> pcl::io::MultiviewInputLookup {
+    return [&, wrong_sensor] (std::size_t i, pcl::registration::MultiviewInput& input) {
+      input.name = files[i].name;
+      if (wrong_sensor && i == 1)
+        return (input.viewpoint = shifted, true);
+      return pcl::io::loadScanSensor (cache, pcl::io::viewIdOf (files[i].name), sensorKey (i), input.viewpoint);
+    };
+  };
+  const pcl::registration::MultiviewRegistrationParams params;
+  std::vector<pcl::registration::MultiviewRegistrationResult> results;
+  for (int run = 0; run < 3; ++run)
+  {
+    loads = 0;
+    std::vector<pcl::registration::MultiviewInput> inputs;
+    const auto reports = pcl::io::prepareMultiviewInputs (files.size (), load, params, 2, &cache, inputs, {}, lookup (run == 2));
+    EXPECT_EQ (loads, run == 0 ? 3 : run == 1 ? 0 : 1) << "run " << run;
+    for (std::size_t i = 0; i < reports.size (); ++i)
+      EXPECT_EQ (reports[i].scan_not_read, run == 1 || (run == 2 && i != 1)) << "run " << run << ", view " << i;
+    results.push_back (pcl::registration::MultiviewTensorRegistration ().compute (inputs));
+  }
+  ASSERT_EQ (results[0].registeredCount (), 3u);
+  for (std::size_t i = 0; i < 3; ++i)
+    EXPECT_TRUE (results[0].views[i].pose.matrix () == results[1].views[i].pose.matrix ()) << i;
+
+  // The entry itself: back exactly under its key, never under another.
+  pcl::ScanViewpoint kept;
+  ASSERT_TRUE (pcl::io::loadScanSensor (cache, pcl::io::viewIdOf (files[2].name), sensorKey (2), kept));
+  EXPECT_TRUE (kept.sensor_pose.matrix () == files[2].viewpoint.sensor_pose.matrix ());
+  EXPECT_EQ (kept.model, files[2].viewpoint.model);
+  EXPECT_FALSE (pcl::io::loadScanSensor (cache, pcl::io::viewIdOf (files[2].name),
+                                         pcl::io::scanSensorKey (sensorKey (2).source, "0,0,0"), kept))
+      << "another --viewpoint";
+  EXPECT_FALSE (pcl::io::loadScanSensor (cache, pcl::io::viewIdOf (files[2].name), sensorKey (1), kept)) << "another file";
 }

@@ -117,11 +117,38 @@ namespace pcl
       }
     }
 
+    namespace
+    {
+      /** View \a i from the cache alone: its sensor known to \a lookup and its meshes VALID under the key it
+        * gives. False (and \a report to be made again) otherwise. */
+      bool
+      cachedWithoutScan (const TensorViewCache& cache, const MultiviewInputLookup& lookup, std::size_t i,
+                         const ScanPreparationParams& preparation, pcl::registration::MultiviewInput& input,
+                         pcl::registration::TensorView::Ptr& view, CachedViewReport& report)
+      {
+        pcl::registration::MultiviewInput known;
+        if (!lookup (i, known))
+          return false;
+        CachedViewReport found;
+        found.id = viewIdOf (known.name);
+        found.key = viewCacheKey (known.name, preparation, known.viewpoint);
+        auto loaded = std::make_shared<pcl::registration::TensorView> ();
+        found.meshes_found = cache.loadView (found.id, found.key, *loaded);
+        if (found.meshes_found != CacheEntryState::VALID)
+          return false;
+        found.scan_not_read = true;
+        input = known;
+        view = loaded;
+        report = found;
+        return true;
+      }
+    }
+
     std::vector<CachedViewReport>
     prepareMultiviewInputs (std::size_t count, const MultiviewInputLoader& load,
                             const pcl::registration::MultiviewRegistrationParams& params, unsigned threads,
                             const TensorViewCache* cache, std::vector<pcl::registration::MultiviewInput>& inputs,
-                            const pcl::registration::MultiviewProgress& progress)
+                            const pcl::registration::MultiviewProgress& progress, const MultiviewInputLookup& lookup)
     {
       using pcl::registration::MultiviewStage;
       std::mutex mutex;
@@ -137,6 +164,11 @@ namespace pcl
       std::vector<pcl::registration::TensorView::Ptr> views (count);
       inputs.assign (count, {});
       pcl::detail::parallelFor (count, threads, [&] (std::size_t i) {
+        if (cache && lookup && cachedWithoutScan (*cache, lookup, i, preparation, inputs[i], views[i], reports[i]))
+        {
+          step (MultiviewStage::PREPARATION);
+          return;
+        }
         auto& input = inputs[i] = load (i);
         if (!input.cloud)
           return;

@@ -55,7 +55,8 @@ namespace pcl
         PCL_TENSOR_THROW (pcl::BadArgumentException, "'" << view_id << "' cannot name a cache entry (see isValidViewId)");
       const char* suffix = kind == CacheEntryKind::MESHES ? ".meshes.tvc" : kind == CacheEntryKind::TENSORS ? ".tensors.tvc"
                          : kind == CacheEntryKind::PAIR ? ".pair.tvc" : kind == CacheEntryKind::RUN ? ".run.tvc"
-                         : kind == CacheEntryKind::VOLUME ? ".volume.tvc" : ".scores.tvc";
+                         : kind == CacheEntryKind::VOLUME ? ".volume.tvc" : kind == CacheEntryKind::SENSOR ? ".sensor.tvc"
+                         : ".scores.tvc";
       return (std::filesystem::path (dir_) / (view_id + suffix)).string ();
     }
 

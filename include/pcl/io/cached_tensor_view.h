@@ -23,6 +23,8 @@ namespace pcl
       CacheEntryState tensors_found = CacheEntryState::MISSING;
       bool meshes_computed = false;
       bool tensors_computed = false;
+      /** Its sensor came from a lookup (MultiviewInputLookup) and its meshes from the cache: its scan was not read. */
+      bool scan_not_read = false;
     };
 
     /** \brief The key of a view file: its bytes, and the settings and sensor it is prepared with. */
@@ -66,6 +68,11 @@ namespace pcl
     /** \brief Loads view \a i of a set: its name (its file), cloud and viewpoint. Called from several threads. */
     using MultiviewInputLoader = std::function<pcl::registration::MultiviewInput (std::size_t i)>;
 
+    /** \brief View \a i's name (its file) and sensor without reading its scan, when they are known (e.g.
+      * kept in the cache by an earlier read, loadScanSensor()): true and \a input filled, its cloud null;
+      * false otherwise. Called from several threads. */
+    using MultiviewInputLookup = std::function<bool (std::size_t i, pcl::registration::MultiviewInput& input)>;
+
     /** \brief The \a count views of a set ready to register, on \a threads threads (0: every core): each
       * loaded, its meshes (prepareTensorView()) taken from \a cache when VALID or computed (and stored
       * when \a cache is given), then D (params.object_dimensions when given, else Eq. 1 over all the
@@ -75,12 +82,14 @@ namespace pcl
       * \param[out] inputs the views, each with its prepared view (MultiviewInput::view)
       * \param[in] progress called as views are meshed (PREPARATION) and their tensors computed (TENSORS),
       *            one call at a time
+      * \param[in] lookup with \a cache: a view whose sensor it knows and whose meshes are VALID under the key
+      *            that sensor gives is not loaded at all (its scan is neither read nor kept)
       * \return what the cache held for each view (all MISSING without a cache) */
     std::vector<CachedViewReport>
     prepareMultiviewInputs (std::size_t count, const MultiviewInputLoader& load,
                             const pcl::registration::MultiviewRegistrationParams& params, unsigned threads,
                             const TensorViewCache* cache, std::vector<pcl::registration::MultiviewInput>& inputs,
-                            const pcl::registration::MultiviewProgress& progress = {});
+                            const pcl::registration::MultiviewProgress& progress = {}, const MultiviewInputLookup& lookup = {});
 
     /** \brief Pair registrations answered from \a cache when a VALID entry exists for both views' keys,
       * D and the settings (pairCacheKey()), else registered (registerTensorViews()) and stored, for

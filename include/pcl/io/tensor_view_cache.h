@@ -40,7 +40,9 @@ namespace pcl
       /** Ranking scores of view pairs (PairScoreCache), each keyed by pairScoreKey(). */
       SCORES = 5,
       /** The voxels of a model (IntegrationVolume), keyed by integrationVolumeKey(). */
-      VOLUME = 6
+      VOLUME = 6,
+      /** The sensor a scan file was read with (ScanViewpoint), keyed by scanSensorKey(). */
+      SENSOR = 7
     };
 
     /** \brief What a lookup found. Only VALID gives data; any other state leaves the output untouched.
