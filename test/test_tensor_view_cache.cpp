@@ -191,6 +191,24 @@ namespace
         fs::remove_all (dir_, ignored);
       }
 
+      /** Three views of a ring of the example object, 30 degrees apart, written as range-grid PLY files
+        * in the test's folder: the inputs (file name, cloud, sensor) and, in \a rendered, the truth. */
+      std::vector<pcl::registration::MultiviewInput>
+      ringFiles (std::vector<pcl::SyntheticView>& rendered) const
+      {
+        pcl::SyntheticViewParams render;
+        render.camera.width = render.camera.height = 200;
+        rendered = pcl::renderSyntheticViews (pcl::makeExampleObject (), pcl::makeRingViewDirections (3, 30.0), render);
+        std::vector<pcl::registration::MultiviewInput> files;
+        for (std::size_t i = 0; i < rendered.size (); ++i)
+        {
+          const std::string path = (dir_ / ("view" + std::to_string (i) + ".ply")).string ();
+          pcl::io::saveRangeGridPLY (path, *rendered[i].view.cloud);
+          files.push_back ({path, rendered[i].view.cloud, rendered[i].view.viewpoint, nullptr});
+        }
+        return files;
+      }
+
       /** A cache holding view \a i's meshes and tensors under kKey, as id "view". */
       TensorViewCache
       filledCache (int i = 0) const
@@ -935,16 +953,8 @@ TEST_F (TensorViewCacheTest, CachedViewsRegisterAsTheFirstRunDid)
 {
   // Three views of a ring written as files: a first run fills the cache, a second takes every
   // meshes, tensors and pair entry from it and must give the same poses bit for bit.
-  pcl::SyntheticViewParams render;
-  render.camera.width = render.camera.height = 200;
-  const auto rendered = pcl::renderSyntheticViews (pcl::makeExampleObject (), pcl::makeRingViewDirections (3, 30.0), render);
-  std::vector<pcl::registration::MultiviewInput> files;
-  for (std::size_t i = 0; i < rendered.size (); ++i)
-  {
-    const std::string path = (dir_ / ("view" + std::to_string (i) + ".ply")).string ();
-    pcl::io::saveRangeGridPLY (path, *rendered[i].view.cloud);
-    files.push_back ({path, rendered[i].view.cloud, rendered[i].view.viewpoint, nullptr});
-  }
+  std::vector<pcl::SyntheticView> rendered;
+  const std::vector<pcl::registration::MultiviewInput> files = ringFiles (rendered);
   const TensorViewCache cache ((dir_ / "cache").string ());
   const pcl::registration::MultiviewRegistrationParams params;
   std::vector<pcl::registration::MultiviewRegistrationResult> results;
@@ -983,16 +993,8 @@ TEST_F (TensorViewCacheTest, CachedViewsRegisterAsTheFirstRunDid)
 // is not loaded again: the loader is not called, and the run gives the same poses.
 TEST_F (TensorViewCacheTest, ViewsOfAKnownSensorAreNotReadAgain)
 {
-  pcl::SyntheticViewParams render;
-  render.camera.width = render.camera.height = 200;
-  const auto rendered = pcl::renderSyntheticViews (pcl::makeExampleObject (), pcl::makeRingViewDirections (3, 30.0), render);
-  std::vector<pcl::registration::MultiviewInput> files;
-  for (std::size_t i = 0; i < rendered.size (); ++i)
-  {
-    const std::string path = (dir_ / ("view" + std::to_string (i) + ".ply")).string ();
-    pcl::io::saveRangeGridPLY (path, *rendered[i].view.cloud);
-    files.push_back ({path, rendered[i].view.cloud, rendered[i].view.viewpoint, nullptr});
-  }
+  std::vector<pcl::SyntheticView> rendered;
+  const std::vector<pcl::registration::MultiviewInput> files = ringFiles (rendered);
   const TensorViewCache cache ((dir_ / "cache").string ());
   const auto sensorKey = [&] (std::size_t i) { return pcl::io::scanSensorKey (pcl::io::hashFileContents (files[i].name), ""); };
   std::atomic<int> loads{0};
