@@ -53,9 +53,9 @@ namespace
     print_info ("  --pairs FILE       overlapping pairs, one \"A B\" per line (file names or 0-based indices)\n");
     print_info ("  --cache DIR        keep each view's meshes and tensors in DIR (pcl_tensor_prepare's cache): a re-run,\n"
                 "                     or one with views added, computes only what is new\n");
-    print_info ("  --keep-poses CONF  views that CONF names keep its poses, and only the others are registered, to them:\n"
-                "                     to add views to a model made before, give its .conf (with --cache, only the new\n"
-                "                     views are meshed); the global step moves the new views only\n");
+    print_info ("  --keep-poses CONF  views that CONF names keep its poses, and only the others are registered, to them\n"
+                "                     and moved by the global step: to add views to a model made before, give its .conf\n"
+                "                     (with --cache, the old views' voxels come from it too: only the new are integrated)\n");
     print_info ("  --pairs-results F  pair registrations computed elsewhere (pcl_tensor_pairs; repeat for several\n"
                 "                     files): pairs are taken from them, never registered here\n");
     print_info ("  --loop             a turntable: the last view overlaps the first (closes the loop)\n");
@@ -400,7 +400,7 @@ namespace
     integration.setParams (o.integration);
     integration.setNumberOfThreads (o.threads);
     const bool any_kept = std::any_of (result.views.begin (), result.views.end (),
-                                   [c] (const auto& v) { return v.registered && v.component == c && v.pose_kept; });
+                                       [c] (const auto& v) { return v.registered && v.component == c && v.pose_kept; });
     if (cache && any_kept)
       integration.setInitialVolume (pcl::io::loadIntegrationVolume (*cache, pcl::io::integrationVolumeId (o.keep_poses),
                                                                     volumeKey (result, prepared, c, true, kept_poses, o.integration)));
