@@ -409,7 +409,9 @@ namespace
       const auto& v = result.views[i];
       EXPECT_EQ (v.pose_kept, inputs[i].pose_known) << v.name;
       if (inputs[i].pose_known)
+      {
         EXPECT_TRUE (v.pose.matrix () == inputs[i].known_pose.matrix ()) << v.name << ": a kept pose moved";
+      }
       const auto error = poseError (result, v.pose, views[0].view.pose, views[i].view.pose);
       EXPECT_LT (error.rotation_deg, 0.5) << v.name;
       EXPECT_LT (error.translation_resolutions, 2.0) << v.name;
