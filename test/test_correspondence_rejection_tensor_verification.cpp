@@ -280,6 +280,26 @@ TEST (CorrespondenceRejectorTensorVerification, OcclusionBoundariesAPoseSlightly
   EXPECT_LT (rejector.freeSpaceViolation (Eigen::Matrix4f::Identity (), margin), 0.002);
 }
 
+// A pose slid across the model's line of sight puts the scene's edge over the model's background: the
+// free-space check, which counts only surface in front of the model's, misses what the empty space sees.
+TEST (CorrespondenceRejectorTensorVerification, EmptySpaceCountsWhatASlidPosePutsOverTheBackground)
+{
+  CorrespondenceRejectorTensorVerification rejector;
+  setUp (rejector, 0, 1);
+  const Eigen::Matrix4f exact = (views ()[0].pose.inverse () * views ()[1].pose).matrix ().cast<float> ();
+  const Eigen::Vector3f across = views ()[0].scan->fine.viewpoint.sensor_pose.linear ().col (0).cast<float> ();
+  Eigen::Matrix4f slid = exact;
+  slid.block<3, 1> (0, 3) += 15.0f * static_cast<float> (rejector.getResolution ()) * across;
+  const double margin = 4.0;
+  EXPECT_LT (rejector.emptySpaceViolation (exact, margin), 0.01);
+  const double against = rejector.emptySpaceViolation (slid, margin);
+  EXPECT_GT (against, 0.1);
+  EXPECT_GT (against, rejector.freeSpaceViolation (slid, rejector.getFreeSpaceMargin ()));
+  // The z-buffers of another margin are built anew, and mark less of the background empty.
+  EXPECT_LE (rejector.emptySpaceViolation (slid, 16.0), against);
+  EXPECT_THROW (rejector.emptySpaceViolation (exact, 0.0), pcl::BadArgumentException);
+}
+
 TEST (CorrespondenceRejectorTensorVerification, MissingInputThrows)
 {
   CorrespondenceRejectorTensorVerification rejector;

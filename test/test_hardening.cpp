@@ -346,6 +346,8 @@ TEST (HardeningParameters, OutOfRangeParametersThrowBadArgument)
     {"zero reduction grid step", [] (TensorRegistrationParams& p) { p.preparation.reduction_grid_step = 0; }},
     {"negative ambiguity checks", [] (TensorRegistrationParams& p) { p.ambiguity_checks = -1; }},
     {"ambiguity rotation above 180", [] (TensorRegistrationParams& p) { p.ambiguity_rotation = 190.0; }},
+    {"negative rival empty-space margin", [] (TensorRegistrationParams& p) { p.rival_empty_space_margin = -1.0; }},
+    {"rival empty-space fraction 0", [] (TensorRegistrationParams& p) { p.rival_empty_space_fraction = 0.0; }},
     {"zero partners", [] (TensorRegistrationParams& p) { p.partners_per_vertex = 0; }},
     {"normal angle 180", [] (TensorRegistrationParams& p) { p.min_normal_angle = 180.0; }},
     {"n_c fraction 0", [] (TensorRegistrationParams& p) { p.verification.correspondence_fraction = 0.0; }},

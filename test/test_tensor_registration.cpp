@@ -294,6 +294,29 @@ TEST (TensorRegistration, OppositeViewsOfABustAreRefused)
   }
 }
 
+// Example views 9 and 10 (overlap 0.8): a rival pose passes that puts much of one view over the other
+// sensor's background, with fewer fine correspondences, while the true pose puts almost nothing there.
+// That one-sided evidence dismisses it (rival_empty_space_margin); without it the pair is ambiguous.
+TEST (TensorRegistration, RivalOverTheOtherSensorsBackgroundIsDismissed)
+{
+  const auto& views = exampleViews ();
+  TensorRegistration registration;
+  const auto& report = registerViews (registration, views[9], views[10]);
+  ASSERT_TRUE (report.registered) << "ambiguous " << report.ambiguous;
+  const auto error = pcl::registrationError (Eigen::Affine3d (report.transform.cast<double> ()), groundTruth (views[9], views[10]),
+                                             views[9].resolution);
+  EXPECT_LT (error.rotation_deg, 1.0);
+  EXPECT_LT (error.translation_resolutions, 3.0);
+
+  pcl::registration::TensorRegistrationParams params;
+  params.rival_empty_space_margin = 0.0;  // every rival doubts
+  TensorRegistration doubting;
+  doubting.setParams (params);
+  const auto& doubted = registerViews (doubting, views[9], views[10]);
+  EXPECT_FALSE (doubted.registered);
+  EXPECT_TRUE (doubted.ambiguous);
+}
+
 TEST (TensorRegistration, ReportsBadInputLoudly)
 {
   TensorRegistration registration;

@@ -149,6 +149,9 @@ namespace pcl
       model_search_.setInputCloud (*model_->fine.cloud);
       model_view_.reset ();
       scene_view_.reset ();
+      model_empty_view_.reset ();
+      scene_empty_view_.reset ();
+      empty_views_margin_ = 0.0;
       // The scene's search and the model's sample serve count_both_views and covisibility().
       scene_sample_ = evenSample (*scene_->fine.cloud, params_.sample_points);
       scene_search_ = pcl::BoundedNearestSearch (cell);
@@ -280,25 +283,29 @@ namespace pcl
       }
     }
 
-    void
-    CorrespondenceRejectorTensorVerification::projectViews ()
+    RangeViewProjectionMemo::Projection
+    CorrespondenceRejectorTensorVerification::projectView (const shared_ptr<const PreparedScan>& view,
+                                                           const RangeViewProjectionMemo::Ptr& memo, double empty_margin) const
     {
       // The z-buffers are built only for hypotheses that got this far: once per view with a memo,
       // else once per pair of views. They depend on the view and on the empty-space margin alone.
-      const int empty_margin = static_cast<int> (std::ceil (params_.empty_space_margin * kZBufferPixelsPerResolution));
-      const auto project = [&] (const shared_ptr<const PreparedScan>& view, const RangeViewProjectionMemo::Ptr& memo) {
-        const auto make = [&] () -> RangeViewProjectionMemo::Projection {
-          auto projection = std::make_shared<RangeViewProjection> (view->fine, 3.0, kZBufferPixelsPerResolution, 16u << 20, view->resolution);
-          if (params_.empty_space_margin > 0.0)
-            projection->markEmptySpace (empty_margin);
-          return projection;
-        };
-        return memo ? memo->get (view, params_.empty_space_margin > 0.0 ? empty_margin : -1, make) : make ();
+      const int pixels = static_cast<int> (std::ceil (empty_margin * kZBufferPixelsPerResolution));
+      const auto make = [&] () -> RangeViewProjectionMemo::Projection {
+        auto projection = std::make_shared<RangeViewProjection> (view->fine, 3.0, kZBufferPixelsPerResolution, 16u << 20, view->resolution);
+        if (empty_margin > 0.0)
+          projection->markEmptySpace (pixels);
+        return projection;
       };
+      return memo ? memo->get (view, empty_margin > 0.0 ? pixels : -1, make) : make ();
+    }
+
+    void
+    CorrespondenceRejectorTensorVerification::projectViews ()
+    {
       if (!model_view_)
-        model_view_ = project (model_, model_projections_);
+        model_view_ = projectView (model_, model_projections_, params_.empty_space_margin);
       if (!scene_view_)
-        scene_view_ = project (scene_, scene_projections_);
+        scene_view_ = projectView (scene_, scene_projections_, params_.empty_space_margin);
     }
 
     double
@@ -312,8 +319,30 @@ namespace pcl
     {
       prepare ();
       projectViews ();
-      return std::max (violationFraction (*scene_->fine.cloud, scene_search_, t, *model_view_, margin),
-                       violationFraction (*model_->fine.cloud, model_search_, inverseRigid (t), *scene_view_, margin));
+      return violation (t, margin, *model_view_, *scene_view_);
+    }
+
+    double
+    CorrespondenceRejectorTensorVerification::emptySpaceViolation (const Eigen::Matrix4f& t, double empty_margin)
+    {
+      if (!(empty_margin > 0.0))
+        PCL_TENSOR_THROW (BadArgumentException, "the empty-space margin must be positive, got " << empty_margin);
+      prepare ();
+      if (empty_margin != empty_views_margin_)
+      {
+        model_empty_view_ = projectView (model_, model_projections_, empty_margin);
+        scene_empty_view_ = projectView (scene_, scene_projections_, empty_margin);
+        empty_views_margin_ = empty_margin;
+      }
+      return violation (t, getFreeSpaceMargin (), *model_empty_view_, *scene_empty_view_);
+    }
+
+    double
+    CorrespondenceRejectorTensorVerification::violation (const Eigen::Matrix4f& t, double margin, const RangeViewProjection& model_view,
+                                                         const RangeViewProjection& scene_view) const
+    {
+      return std::max (violationFraction (*scene_->fine.cloud, scene_search_, t, model_view, margin),
+                       violationFraction (*model_->fine.cloud, model_search_, inverseRigid (t), scene_view, margin));
     }
 
     double

@@ -66,6 +66,10 @@ namespace pcl
                           << params.ambiguity_checks << " and " << params.ambiguity_rotation);
       if (!(params.rival_margin >= 0.0 && params.rival_margin <= 1.0))
         PCL_TENSOR_THROW (BadArgumentException, "the rival margin must be in [0, 1], got " << params.rival_margin);
+      if (!(params.rival_empty_space_margin >= 0.0) || !std::isfinite (params.rival_empty_space_margin) ||
+          !(params.rival_empty_space_fraction > 0.0 && params.rival_empty_space_fraction <= 1.0))
+        PCL_TENSOR_THROW (BadArgumentException, "the rival's empty-space margin must be finite and non-negative and its fraction in "
+                          "(0, 1], got " << params.rival_empty_space_margin << " and " << params.rival_empty_space_fraction);
     }
 
     pcl::PointCloud<pcl::TensorDescriptor>::Ptr

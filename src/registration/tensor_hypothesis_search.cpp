@@ -56,6 +56,11 @@ namespace pcl
           * ambiguous pairs into wrong answers (doc/design.md#free-space-check). */
         constexpr double kRivalFreeSpaceFactor = 5.0;
 
+        /** A rival is dismissed on empty-space evidence only when the kept pose shows at most this
+          * fraction of the rival's (TensorRegistrationParams::rival_empty_space_margin): one-sided
+          * evidence, not a view whose background is cropped or missed, which speaks against both. */
+        constexpr double kKeptEmptySpaceRatio = 0.05;
+
         /** Hypotheses that reached ICP and failed; a close repeat would fail the same way. */
         class RefutedHypotheses
         {
@@ -240,12 +245,28 @@ namespace pcl
               return verified && (!accept_ || accept_ (result));
             }
 
-            /** A second pose, other than \a pose, that the matches after \a from also verify (rivalPasses());
-              * the matches whose hypothesis is near \a pose are taken as leading to it and skipped. */
+            /** Whether \a rival, which rivalPasses(), is dismissed rather than a doubt on \a kept: it has
+              * fewer fine correspondences, and the other sensor's background speaks against it alone
+              * (TensorRegistrationParams::rival_empty_space_margin). */
+            bool
+            dismissed (const TensorVerificationResult& rival, const TensorVerificationResult& kept)
+            {
+              const double margin = params_.rival_empty_space_margin;
+              if (!(margin > 0.0) || rival.fine_correspondences >= kept.fine_correspondences)
+                return false;
+              const double against = verification_.emptySpaceViolation (rival.transform, margin);
+              return against >= params_.rival_empty_space_fraction &&
+                     verification_.emptySpaceViolation (kept.transform, margin) <= kKeptEmptySpaceRatio * against;
+            }
+
+            /** A second pose, other than \a kept's, that the matches after \a from also verify (rivalPasses())
+              * and that is not dismissed(); the matches whose hypothesis is near \a kept's are taken as
+              * leading to it and skipped. */
             bool
             findRival (const std::vector<TensorMatch>& matches, std::size_t from, const TensorCloud::ConstPtr& batch,
-                       const Eigen::Matrix4f& pose)
+                       const TensorVerificationResult& kept)
             {
+              const Eigen::Matrix4f& pose = kept.transform;
               int checks = 0;
               for (std::size_t k = from; k < matches.size () && checks < params_.ambiguity_checks; ++k)
               {
@@ -257,7 +278,8 @@ namespace pcl
                 TensorVerificationResult result;
                 if ((passes (matches[k], batch, hypothesis, result) || rivalPasses (result)) &&
                     !posesAgree (result.transform, pose, scene_centroid_, params_.repeat_rotation,
-                                 params_.repeat_translation * report_.resolution))
+                                 params_.repeat_translation * report_.resolution) &&
+                    !dismissed (result, kept))
                 {
                   report_.rival_transform = result.transform;
                   return true;
@@ -268,8 +290,8 @@ namespace pcl
 
             /** The rival poses near \a best (rivalPoses()) that pass verification and the acceptor: the
               * one with the most fine correspondences replaces \a best. True when another distinct pose
-              * that is evidence enough for a rival (rivalPasses()) has nearly as many (rival_margin): the
-              * views do not pin the pose down. */
+              * that is evidence enough for a rival (rivalPasses()) has nearly as many (rival_margin) and is
+              * not dismissed(): the views do not pin the pose down. */
             bool
             probeRivals (TensorVerificationResult& best)
             {
@@ -305,7 +327,8 @@ namespace pcl
               rivals.insert (rivals.end (), passed.begin (), passed.end ());
               for (const auto& r : rivals)
                 if (r.fine_correspondences >= (1.0 - params_.rival_margin) * best.fine_correspondences &&
-                    !posesAgree (r.transform, best.transform, scene_centroid_, kRivalRotation, rival_distance))
+                    !posesAgree (r.transform, best.transform, scene_centroid_, kRivalRotation, rival_distance) &&
+                    !dismissed (r, best))
                 {
                   report_.rival_transform = r.transform;
                   return true;
@@ -338,7 +361,7 @@ namespace pcl
                   continue;
                 }
                 // Two poses that both verify: no evidence picks one, so neither is reported.
-                report_.ambiguous = findRival (matches, k + 1, batch, result.transform) || probeRivals (result);
+                report_.ambiguous = findRival (matches, k + 1, batch, result) || probeRivals (result);
                 report_.registered = !report_.ambiguous;
                 report_.winning_match = match;
                 report_.winning_match.scene += static_cast<decltype (match.scene)> (first);

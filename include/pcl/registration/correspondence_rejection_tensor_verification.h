@@ -123,6 +123,15 @@ namespace pcl
           */
         double freeSpaceViolation (const Eigen::Matrix4f& t, double margin);
 
+        /** \brief freeSpaceViolation() at getFreeSpaceMargin(), where a point on a line of sight that
+          * passes farther than \a empty_margin d_res from all of the other view's surface violates it
+          * too (it lies where that sensor saw background; RangeViewProjection::markEmptySpace()),
+          * whatever TensorVerificationParams::empty_space_margin is. The z-buffers are built once per
+          * margin and pair (and per view with a memo).
+          * \throw pcl::BadArgumentException when the model or the scene is missing or \a empty_margin is not positive
+          */
+        double emptySpaceViolation (const Eigen::Matrix4f& t, double empty_margin);
+
         /** \brief Keep the correspondences whose hypothesis passes verify(), in order.
           * The transform of each is available from getAcceptedTransforms(), index for index.
           */
@@ -170,8 +179,16 @@ namespace pcl
         /** verify()'s ICP from \a hypothesis on the scene's sample; stages before the last end with
           * fewer than \a min_pairs pairs (PointToPlaneIcpParams::min_pairs). */
         PointToPlaneIcpResult icp (const Eigen::Matrix4f& hypothesis, std::size_t min_pairs) const;
+        /** The z-buffer of \a view, from \a memo when it has one; background farther than \a empty_margin
+          * d_res from the surface is marked empty when \a empty_margin is positive. */
+        RangeViewProjectionMemo::Projection projectView (const shared_ptr<const PreparedScan>& view,
+                                                         const RangeViewProjectionMemo::Ptr& memo, double empty_margin) const;
         /** The z-buffers of both views, built once per pair, for the first hypothesis that needs them. */
         void projectViews ();
+        /** The larger fraction, over both directions, of one view's points that violate the other's
+          * free space in its z-buffer (\a model_view or \a scene_view) under \a t. */
+        double violation (const Eigen::Matrix4f& t, double margin, const RangeViewProjection& model_view,
+                          const RangeViewProjection& scene_view) const;
         /** max(D_combined - D) of the model points and the transformed scene points, in the best of
           * their combined principal frame and each view's own (registeredDimensionExcess). */
         double dimensionExcess (const PointCloudN& model, const PointCloudN& scene, const Eigen::Matrix4f& t) const;
@@ -186,6 +203,8 @@ namespace pcl
         pcl::BoundedNearestSearch model_search_, scene_search_;
         RangeViewProjectionMemo::Ptr model_projections_, scene_projections_;
         RangeViewProjectionMemo::Projection model_view_, scene_view_;
+        RangeViewProjectionMemo::Projection model_empty_view_, scene_empty_view_;  ///< emptySpaceViolation()'s
+        double empty_views_margin_{0.0};  ///< the margin they were marked with; 0: none built
         PointCloudN::Ptr scene_sample_{new PointCloudN}, model_sample_{new PointCloudN};
         std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> accepted_transforms_;
         std::vector<TensorMatch> input_matches_;

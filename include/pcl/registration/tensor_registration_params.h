@@ -106,6 +106,16 @@ namespace pcl
         * safer: a pose turned along a surface of revolution gains correspondences where it turns the
         * views onto more of each other. */
       double rival_margin = 1.0;
+      /** A rival with fewer fine correspondences than the kept pose is dismissed, not a doubt, when the
+        * other sensor's background speaks against it alone: at least rival_empty_space_fraction of its
+        * points seen by that sensor lie in front of its surface or where it saw nothing, more than this
+        * many d_res from all of it (emptySpaceViolation()), twenty times the kept pose's fraction there.
+        * A pose slid along a prismatic part fits the common surface as well as the truth does, but puts
+        * the rest of one view over the other's background. 0 disables: every rival doubts.
+        * \note Beyond the paper; see doc/design.md#rival-probe. */
+      double rival_empty_space_margin = 4.0;
+      /** See rival_empty_space_margin: a tenth of the seen points, ten times the free-space check's limit. */
+      double rival_empty_space_fraction = 0.1;
     };
 
     /** \brief Check every parameter of \a params before any work is done: the components' own
