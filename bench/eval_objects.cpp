@@ -105,6 +105,8 @@ namespace
                  "  --rival-margin M   a rival with (1 - M) times the kept pose's fine correspondences is ambiguous (default %g)\n"
                  "  --rival-empty-space-margin M  dismiss rivals whose points lie where the other sensor saw nothing M d_res\n"
                  "                     from its surface (0: every rival doubts; default %g)\n"
+                 "  --rival-dimension-factor F  a rival refused by D alone is judged with F times the dimension\n"
+                 "                     tolerances (1: as answers are; default %g)\n"
                  "  --tr T, --tc T     tensor matching thresholds t_r and t_c, Eq. 5 and 6 (default %g, %g)\n"
                  "  --order O          order of hypotheses: best or scene (default %s)\n"
                  "  --fpfh             also PCL's FPFH + SampleConsensusPrerejective + the same ICP on every pair (one\n"
@@ -115,7 +117,7 @@ namespace
                  d.params.verification.fine_dimension_tolerance, d.params.verification.fine_dimension_fraction,
                  d.params.verification.coarse_dimension_fraction,
                  d.params.verification.empty_space_margin, d.params.verification.checked_dimensions, d.params.rival_margin,
-                 d.params.rival_empty_space_margin,
+                 d.params.rival_empty_space_margin, d.params.rival_dimension_factor,
                  d.params.overlap_threshold, d.params.correlation_threshold,
                  pcl::registration::tensorMatchOrderName (d.params.order), d.out.c_str (), d.data.c_str ());
   }
@@ -405,6 +407,7 @@ namespace
     pcl::console::parse_argument (argc, argv, "--checked-dimensions", v.checked_dimensions);
     pcl::console::parse_argument (argc, argv, "--rival-margin", o.params.rival_margin);
     pcl::console::parse_argument (argc, argv, "--rival-empty-space-margin", o.params.rival_empty_space_margin);
+    pcl::console::parse_argument (argc, argv, "--rival-dimension-factor", o.params.rival_dimension_factor);
     pcl::console::parse_argument (argc, argv, "--tr", o.params.overlap_threshold);
     pcl::console::parse_argument (argc, argv, "--tc", o.params.correlation_threshold);
     std::string order;

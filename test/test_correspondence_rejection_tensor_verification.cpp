@@ -108,6 +108,34 @@ TEST (CorrespondenceRejectorTensorVerification, VerifyReportsTheFailingStage)
   EXPECT_GE (result.fine_correspondences, 2.0 * result.required_correspondences);
 }
 
+// verify ()'s dimension factor widens the checks against D (Eq. 9) and nothing else: the exact pose,
+// refused against a D a fifth too short, passes with it, and a pose without overlap still fails its count.
+TEST (CorrespondenceRejectorTensorVerification, DimensionFactorWidensOnlyTheChecksAgainstD)
+{
+  CorrespondenceRejectorTensorVerification rejector;
+  setUp (rejector, 0, 1);
+  const Eigen::Matrix4f exact = (views ()[0].pose.inverse () * views ()[1].pose).matrix ().cast<float> ();
+  pcl::ObjectDimensions short_d = pcl::computeObjectDimensions<pcl::PointNormal> (
+      {views ()[0].scan->fine.cloud.get (), views ()[1].scan->fine.cloud.get ()});
+  short_d.D *= 0.8;
+  rejector.setObjectDimensions (short_d);
+  TensorVerificationResult result;
+  EXPECT_FALSE (rejector.verify (exact, result));
+  EXPECT_EQ (result.stage, TensorVerificationStage::COARSE_DIMENSIONS);
+
+  TensorVerificationResult widened;
+  EXPECT_TRUE (rejector.verify (exact, widened, true, 100.0)) << toString (widened.stage);
+  EXPECT_DOUBLE_EQ (widened.coarse_dimension_excess, result.coarse_dimension_excess) << "the excess is measured alike";
+  EXPECT_GT (widened.fine_dimension_excess, 2.0);
+  EXPECT_TRUE (rejector.verify (widened.transform, widened, false, 100.0)) << "its own result's pose, passed back in";
+
+  Eigen::Matrix4f far = Eigen::Matrix4f::Identity ();
+  far (0, 3) = 1.0f;
+  EXPECT_FALSE (rejector.verify (far, widened, true, 100.0));
+  EXPECT_EQ (widened.stage, TensorVerificationStage::COARSE_OVERLAP);
+  EXPECT_THROW (rejector.verify (exact, widened, true, std::nan ("")), pcl::BadArgumentException);
+}
+
 TEST (CorrespondenceRejectorTensorVerification, CountsTheCorrespondencesOfBothViews)
 {
   // A view against itself at the exact pose: every point of either copy lies on the other.

@@ -348,6 +348,8 @@ TEST (HardeningParameters, OutOfRangeParametersThrowBadArgument)
     {"ambiguity rotation above 180", [] (TensorRegistrationParams& p) { p.ambiguity_rotation = 190.0; }},
     {"negative rival empty-space margin", [] (TensorRegistrationParams& p) { p.rival_empty_space_margin = -1.0; }},
     {"rival empty-space fraction 0", [] (TensorRegistrationParams& p) { p.rival_empty_space_fraction = 0.0; }},
+    {"rival dimension factor below 1", [] (TensorRegistrationParams& p) { p.rival_dimension_factor = 0.5; }},
+    {"infinite rival dimension factor", [] (TensorRegistrationParams& p) { p.rival_dimension_factor = std::numeric_limits<double>::infinity (); }},
     {"zero partners", [] (TensorRegistrationParams& p) { p.partners_per_vertex = 0; }},
     {"normal angle 180", [] (TensorRegistrationParams& p) { p.min_normal_angle = 180.0; }},
     {"n_c fraction 0", [] (TensorRegistrationParams& p) { p.verification.correspondence_fraction = 0.0; }},

@@ -104,7 +104,7 @@ namespace pcl_tensor_python
                       "overlap_threshold", "correlation_threshold", "theta_bin_width", "order", "scene_tensor_batches",
                       "batch_hypotheses", "verification", "max_hypotheses", "repeat_rotation", "repeat_translation",
                       "ambiguity_checks", "ambiguity_rotation", "probe_rivals", "rival_margin", "rival_empty_space_margin",
-                      "rival_empty_space_fraction"})
+                      "rival_empty_space_fraction", "rival_dimension_factor"})
         .def_readwrite ("preparation", &R::preparation)
         .def_readwrite ("grid_size", &R::grid_size)
         .def_readwrite ("partners_per_vertex", &R::partners_per_vertex)
@@ -125,7 +125,8 @@ namespace pcl_tensor_python
         .def_readwrite ("probe_rivals", &R::probe_rivals)
         .def_readwrite ("rival_margin", &R::rival_margin)
         .def_readwrite ("rival_empty_space_margin", &R::rival_empty_space_margin)
-        .def_readwrite ("rival_empty_space_fraction", &R::rival_empty_space_fraction);
+        .def_readwrite ("rival_empty_space_fraction", &R::rival_empty_space_fraction)
+        .def_readwrite ("rival_dimension_factor", &R::rival_dimension_factor);
     }
 
     void

@@ -73,8 +73,9 @@ namespace pcl
       /** Cached pair results of an older verification are stale even under the same parameters: raise
         * this when verification changes its verdicts (2: the free-space check's occlusion and noise rules;
         * 3: rival turns along the screw of the least constrained motion; 4: a rival probe's ICP ends where
-        * a stage is short of pairs; 5: rivals that only the other sensor's background speaks against are dismissed). */
-      constexpr int kVerificationRevision = 5;
+        * a stage is short of pairs; 5: rivals that only the other sensor's background speaks against are dismissed;
+        * 6: rivals are held to D more loosely). */
+      constexpr int kVerificationRevision = 6;
     }
 
     TensorViewCacheKey
@@ -83,7 +84,7 @@ namespace pcl
     {
       static_assert (sizeof (pcl::registration::TensorVerificationParams) == 112,
                      "a field was added to TensorVerificationParams: add it to pairCacheKey () too");
-      static_assert (sizeof (pcl::registration::TensorRegistrationParams) == 304,
+      static_assert (sizeof (pcl::registration::TensorRegistrationParams) == 312,
                      "a field was added to TensorRegistrationParams: add it to pairCacheKey () too");
       TensorViewCacheKey key;
       key.source = taggedHash ("pair").add (model.source).add (model.preparation).add (scene.source).add (scene.preparation).digest ();
@@ -95,7 +96,7 @@ namespace pcl
           .add (static_cast<int> (params.order)).add (params.scene_tensor_batches).add (params.batch_hypotheses)
           .add (params.max_hypotheses).add (params.repeat_rotation).add (params.repeat_translation)
           .add (params.ambiguity_checks).add (params.ambiguity_rotation).add (params.probe_rivals).add (params.rival_margin)
-          .add (params.rival_empty_space_margin).add (params.rival_empty_space_fraction);
+          .add (params.rival_empty_space_margin).add (params.rival_empty_space_fraction).add (params.rival_dimension_factor);
       hash.add (v.coarse_dimension_fraction).add (v.correspondence_fraction).add (v.coarse_distance).add (v.count_both_views)
           .add (v.fine_distance).add (v.fine_dimension_tolerance).add (v.fine_dimension_fraction).add (v.checked_dimensions).add (v.icp_iterations)
           .add (v.icp_max_distance).add (v.icp_final_distance).add (v.icp_coarse_stage_step).add (v.sample_points)

@@ -381,16 +381,20 @@ namespace pcl
     }
 
     bool
-    CorrespondenceRejectorTensorVerification::verify (const Eigen::Matrix4f& hypothesis, TensorVerificationResult& result, bool run_icp)
+    CorrespondenceRejectorTensorVerification::verify (const Eigen::Matrix4f& hypothesis, TensorVerificationResult& result, bool run_icp,
+                                                      double dimension_factor)
     {
+      if (!(dimension_factor > 0.0) || !std::isfinite (dimension_factor))
+        PCL_TENSOR_THROW (BadArgumentException, "verification: the dimension factor must be positive and finite, got " << dimension_factor);
       prepare ();
+      const Eigen::Matrix4f start = hypothesis;  // a copy: the caller may pass result.transform itself
       result = TensorVerificationResult ();
-      result.transform = hypothesis;
+      result.transform = start;
       const double d_res = getResolution ();
 
       // Steps 4-6: the reduced meshes, coarsely registered, must fit the object (Eq. 9, t_D).
-      result.coarse_dimension_excess = dimensionExcess (*model_->reduced.cloud, *scene_->reduced.cloud, hypothesis);
-      if (result.coarse_dimension_excess > params_.coarse_dimension_fraction * dims_.mean ())
+      result.coarse_dimension_excess = dimensionExcess (*model_->reduced.cloud, *scene_->reduced.cloud, start);
+      if (result.coarse_dimension_excess > dimension_factor * params_.coarse_dimension_fraction * dims_.mean ())
       {
         result.stage = TensorVerificationStage::COARSE_DIMENSIONS;
         return false;
@@ -398,7 +402,7 @@ namespace pcl
 
       // Steps 7-9: enough correspondences (n_c), estimated on the samples.
       result.required_correspondences = requiredCorrespondences ();
-      result.coarse_correspondences = correspondences (*scene_sample_, *model_sample_, hypothesis, params_.coarse_distance * d_res);
+      result.coarse_correspondences = correspondences (*scene_sample_, *model_sample_, start, params_.coarse_distance * d_res);
       if (result.coarse_correspondences < result.required_correspondences)
       {
         result.stage = TensorVerificationStage::COARSE_OVERLAP;
@@ -410,7 +414,7 @@ namespace pcl
       // need not run.
       if (run_icp)
       {
-        const PointToPlaneIcpResult refined = icp (hypothesis, icpMinPairs ());
+        const PointToPlaneIcpResult refined = icp (start, icpMinPairs ());
         result.transform = refined.transform;
         result.icp_fitness = refined.rms;
       }
@@ -434,7 +438,8 @@ namespace pcl
 
       // Steps 13-14: the registered fine meshes must fit the object (Eq. 9), within 2 d_res or a tenth of D.
       result.fine_dimension_excess = dimensionExcess (*model_->fine.cloud, *scene_->fine.cloud, result.transform) / d_res;
-      if (result.fine_dimension_excess > std::max (params_.fine_dimension_tolerance, params_.fine_dimension_fraction * dims_.mean () / d_res))
+      if (result.fine_dimension_excess >
+          dimension_factor * std::max (params_.fine_dimension_tolerance, params_.fine_dimension_fraction * dims_.mean () / d_res))
       {
         result.stage = TensorVerificationStage::FINE_DIMENSIONS;
         return false;

@@ -70,6 +70,9 @@ namespace pcl
           !(params.rival_empty_space_fraction > 0.0 && params.rival_empty_space_fraction <= 1.0))
         PCL_TENSOR_THROW (BadArgumentException, "the rival's empty-space margin must be finite and non-negative and its fraction in "
                           "(0, 1], got " << params.rival_empty_space_margin << " and " << params.rival_empty_space_fraction);
+      if (!(params.rival_dimension_factor >= 1.0) || !std::isfinite (params.rival_dimension_factor))
+        PCL_TENSOR_THROW (BadArgumentException, "the rival's dimension factor must be finite and at least 1, got "
+                          << params.rival_dimension_factor);
     }
 
     pcl::PointCloud<pcl::TensorDescriptor>::Ptr

@@ -234,13 +234,23 @@ namespace pcl
             }
 
             /** Whether \a result, which failed verification or passed it, is evidence enough for a rival:
-              * it passed, or it failed only at the free-space check within kRivalFreeSpaceFactor; and the
-              * caller's acceptor takes it. */
+              * it passed, or it failed only at the free-space check within kRivalFreeSpaceFactor (unless
+              * \a outright); and the caller's acceptor takes it. A pose refused by D alone is judged again
+              * with rival_dimension_factor, ICP first unless it is \a refined already, and \a result holds
+              * that judgement: excused D, it is excused nothing else. */
             bool
-            rivalPasses (const TensorVerificationResult& result) const
+            rivalPasses (TensorVerificationResult& result, bool refined, bool outright)
             {
+              const bool against_d = result.stage == TensorVerificationStage::COARSE_DIMENSIONS ||
+                                     result.stage == TensorVerificationStage::FINE_DIMENSIONS;
+              if (against_d && params_.rival_dimension_factor > 1.0)
+              {
+                verification_.verify (result.transform, result, !refined && result.stage == TensorVerificationStage::COARSE_DIMENSIONS,
+                                      params_.rival_dimension_factor);
+                outright = true;
+              }
               const bool verified = result.passed () ||
-                  (result.stage == TensorVerificationStage::FREE_SPACE &&
+                  (!outright && result.stage == TensorVerificationStage::FREE_SPACE &&
                    result.free_space_violation <= kRivalFreeSpaceFactor * params_.verification.free_space_fraction);
               return verified && (!accept_ || accept_ (result));
             }
@@ -276,7 +286,7 @@ namespace pcl
                 ++checks;
                 ++report_.ambiguity_checks;
                 TensorVerificationResult result;
-                if ((passes (matches[k], batch, hypothesis, result) || rivalPasses (result)) &&
+                if ((passes (matches[k], batch, hypothesis, result) || rivalPasses (result, false, false)) &&
                     !posesAgree (result.transform, pose, scene_centroid_, params_.repeat_rotation,
                                  params_.repeat_translation * report_.resolution) &&
                     !dismissed (result, kept))
@@ -309,14 +319,15 @@ namespace pcl
                 if (posesAgree (refined, best.transform, scene_centroid_, params_.repeat_rotation, distance))
                   return;
                 TensorVerificationResult result;
-                verification_.verify (refined, result, false);
-                if (rivalPasses (result) && (result.passed () || !outright))
-                  (result.passed () ? passed : rivals).push_back (result);
+                if (verification_.verify (refined, result, false) && (!accept_ || accept_ (result)))
+                  passed.push_back (result);
+                else if (!result.passed () && rivalPasses (result, true, outright))
+                  rivals.push_back (result);
               };
               for (const Eigen::Matrix4f& pose : rivalPoses (conditioning, best.transform, 2, kRivalSteps))
                 probe (pose, false);
               // A far turn of a near-symmetric object (an ellipsoid) meets poses that almost fit: from
-              // there, only a pose that passes outright doubts the answer.
+              // there, only a pose that passes outright (D aside) doubts the answer.
               for (const Eigen::Matrix4f& pose : screwTurnPoses (conditioning, best.transform, kRivalTurns))
                 probe (pose, true);
               // Only a pose that passed outright may replace the answer; any may doubt it.

@@ -88,10 +88,14 @@ namespace pcl
           * \param[out] result the stage reached and the measurements made
           * \param[in] run_icp refine the hypothesis by ICP (step 10) before the fine checks (default);
           *            false judges it as it is, e.g. a pose refine() has already refined
+          * \param[in] dimension_factor the dimension checks' tolerances over D (Eq. 9, steps 4-6 and 13-14)
+          *            times this (default 1; more for a rival, as the D of two views of a round object is short)
           * \return result.passed ()
-          * \throw pcl::BadArgumentException when the model or the scene is missing
+          * \throw pcl::BadArgumentException when the model or the scene is missing, or \a dimension_factor is
+          *        not positive and finite
           */
-        bool verify (const Eigen::Matrix4f& hypothesis, TensorVerificationResult& result, bool run_icp = true);
+        bool verify (const Eigen::Matrix4f& hypothesis, TensorVerificationResult& result, bool run_icp = true,
+                     double dimension_factor = 1.0);
 
         /** \brief \a hypothesis refined by verify()'s ICP alone, without any check: where verify() would
           * judge it (ICP ends early, as there, where too few pairs are left for the pose to pass). Lets a

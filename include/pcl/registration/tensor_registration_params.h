@@ -116,6 +116,13 @@ namespace pcl
       double rival_empty_space_margin = 4.0;
       /** See rival_empty_space_margin: a tenth of the seen points, ten times the free-space check's limit. */
       double rival_empty_space_fraction = 0.1;
+      /** A rival that fails only the dimension checks (Eq. 9) is judged again with their tolerances
+        * times this, and with the free-space check as strict as an answer's: two views of a round object
+        * give a D short of it, and else the most compact of the poses a surface of revolution allows
+        * passes alone, as its turns along the surface widen the union past D. 1: rivals are held to D as
+        * answers are.
+        * \note Beyond the paper; see doc/design.md#rival-probe. */
+      double rival_dimension_factor = 1.5;
     };
 
     /** \brief Check every parameter of \a params before any work is done: the components' own
