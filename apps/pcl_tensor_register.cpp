@@ -36,6 +36,8 @@ namespace
     print_info ("  --grid N           tensor grid size (default %d)\n", d.grid_size);
     print_info ("  --tr T             overlap ratio threshold t_r, Eq. 5 (default %g)\n", d.overlap_threshold);
     print_info ("  --tc T             correlation threshold t_c, Eq. 6 (default %g)\n", d.correlation_threshold);
+    print_info ("  --fallback T       when no match over t_r and t_c settles the pair, try those over T for both\n"
+                "                     (default %g; at or above t_r and t_c: no second round)\n", d.fallback_overlap_threshold);
     print_info ("  --order best|scene  order of hypotheses (default %s)\n", pcl::registration::tensorMatchOrderName (d.order));
     print_info ("  --max-hypotheses N give up after N hypotheses, 0 = all (default %d)\n", d.max_hypotheses);
     print_info ("  --scene-batches N  compute SCENE's tensors in N batches, each verified before the next (default %d)\n",
@@ -62,6 +64,8 @@ namespace
     parse_argument (argc, argv, "--grid", p.grid_size);
     parse_argument (argc, argv, "--tr", p.overlap_threshold);
     parse_argument (argc, argv, "--tc", p.correlation_threshold);
+    if (parse_argument (argc, argv, "--fallback", p.fallback_overlap_threshold) >= 0)
+      p.fallback_correlation_threshold = p.fallback_overlap_threshold;
     parse_argument (argc, argv, "--max-hypotheses", p.max_hypotheses);
     parse_argument (argc, argv, "--scene-batches", p.scene_tensor_batches);
     parse_argument (argc, argv, "--nc", p.verification.correspondence_fraction);

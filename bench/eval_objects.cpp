@@ -108,6 +108,7 @@ namespace
                  "  --rival-dimension-factor F  a rival refused by D alone is judged with F times the dimension\n"
                  "                     tolerances (1: as answers are; default %g)\n"
                  "  --tr T, --tc T     tensor matching thresholds t_r and t_c, Eq. 5 and 6 (default %g, %g)\n"
+                 "  --fallback T       second round of matches over T for t_r and t_c (default %g; 0.5: none)\n"
                  "  --order O          order of hypotheses: best or scene (default %s)\n"
                  "  --fpfh             also PCL's FPFH + SampleConsensusPrerejective + the same ICP on every pair (one\n"
                  "                     thread: PCL draws with std::rand)\n"
@@ -118,7 +119,7 @@ namespace
                  d.params.verification.coarse_dimension_fraction,
                  d.params.verification.empty_space_margin, d.params.verification.checked_dimensions, d.params.rival_margin,
                  d.params.rival_empty_space_margin, d.params.rival_dimension_factor,
-                 d.params.overlap_threshold, d.params.correlation_threshold,
+                 d.params.overlap_threshold, d.params.correlation_threshold, d.params.fallback_overlap_threshold,
                  pcl::registration::tensorMatchOrderName (d.params.order), d.out.c_str (), d.data.c_str ());
   }
 
@@ -410,6 +411,8 @@ namespace
     pcl::console::parse_argument (argc, argv, "--rival-dimension-factor", o.params.rival_dimension_factor);
     pcl::console::parse_argument (argc, argv, "--tr", o.params.overlap_threshold);
     pcl::console::parse_argument (argc, argv, "--tc", o.params.correlation_threshold);
+    if (pcl::console::parse_argument (argc, argv, "--fallback", o.params.fallback_overlap_threshold) >= 0)
+      o.params.fallback_correlation_threshold = o.params.fallback_overlap_threshold;
     std::string order;
     if (pcl::console::parse_argument (argc, argv, "--order", order) >= 0)
       o.params.order = pcl::registration::parseTensorMatchOrder (order);

@@ -9,6 +9,8 @@
 #include <pcl/simulation/synthetic_views.h>
 #include <pcl/simulation/view_set.h>
 
+#include <limits>
+
 
 namespace
 {
@@ -115,6 +117,53 @@ TEST (TensorRegistration, SceneTensorsInBatchesReachTheSamePoseWithFewerTensors)
   bad.scene_tensor_batches = 2;
   bad.batch_hypotheses = -1;
   EXPECT_THROW (pcl::registration::checkParams (bad), pcl::BadArgumentException);
+}
+
+// A second round verifies the matches that fell short of t_r or t_c, and only when the first round
+// found neither a pose nor a doubt: here t_r = t_c = 0.95 leave the adjacent views 9 and 8 no match,
+// the second round at 0.5 registers them, and views 4 and 5, settled by the first round, are unchanged.
+TEST (TensorRegistration, MatchesShortOfTheThresholdsAreVerifiedOnlyWhenNoneAboveSettlesThePair)
+{
+  const auto& views = exampleViews ();
+  pcl::registration::TensorRegistrationParams strict, second;
+  strict.overlap_threshold = strict.correlation_threshold = 0.95f;
+  strict.fallback_overlap_threshold = strict.fallback_correlation_threshold = 0.95f;  // no second round
+  second = strict;
+  second.fallback_overlap_threshold = second.fallback_correlation_threshold = 0.5f;
+  TensorRegistration one_round, two_rounds;
+  one_round.setParams (strict);
+  two_rounds.setParams (second);
+
+  const auto first = registerViews (one_round, views[9], views[8]);
+  EXPECT_FALSE (first.registered);
+  EXPECT_EQ (first.hypotheses_tried, 0u);
+  const auto both = registerViews (two_rounds, views[9], views[8]);
+  ASSERT_TRUE (both.registered);
+  const auto error = pcl::registrationError (Eigen::Affine3d (both.transform.cast<double> ()), groundTruth (views[9], views[8]),
+                                             both.resolution);
+  EXPECT_LT (error.rotation_deg, 1.0);
+  EXPECT_LT (error.translation_resolutions, 2.0);
+  EXPECT_TRUE (both.winning_match.overlap_ratio < 0.95f || both.winning_match.correlation < 0.95f);
+  EXPECT_GE (both.winning_match.overlap_ratio, 0.5f);
+  EXPECT_GE (both.winning_match.correlation, 0.5f);
+
+  const auto settled = registerViews (one_round, views[4], views[5]);
+  const auto again = registerViews (two_rounds, views[4], views[5]);
+  ASSERT_TRUE (settled.registered);
+  EXPECT_TRUE (again.registered);
+  EXPECT_EQ (again.hypotheses_tried, settled.hypotheses_tried);
+  EXPECT_EQ (again.matches, settled.matches);
+  EXPECT_TRUE (again.transform.isApprox (settled.transform));
+
+  for (const float bad : {-0.1f, 1.5f, std::numeric_limits<float>::quiet_NaN ()})
+  {
+    pcl::registration::TensorRegistrationParams p;
+    p.fallback_overlap_threshold = bad;
+    EXPECT_THROW (pcl::registration::checkParams (p), pcl::BadArgumentException) << bad;
+  }
+  pcl::registration::TensorRegistrationParams p;
+  p.fallback_correlation_threshold = -1.5f;
+  EXPECT_THROW (pcl::registration::checkParams (p), pcl::BadArgumentException);
 }
 
 // Noise of 1 d_res along the lines of sight (Section 7.5) puts points up to 4 d_res in front of the

@@ -101,7 +101,8 @@ namespace pcl_tensor_python
       using R = pcl::registration::TensorRegistrationParams;
       bindStruct<R> (m, "RegistrationParams", "Every parameter of pairwise registration; C++ pcl::registration::TensorRegistrationParams.",
                      {"preparation", "grid_size", "partners_per_vertex", "min_normal_angle", "region_growing",
-                      "overlap_threshold", "correlation_threshold", "theta_bin_width", "order", "scene_tensor_batches",
+                      "overlap_threshold", "correlation_threshold", "fallback_overlap_threshold",
+                      "fallback_correlation_threshold", "theta_bin_width", "order", "scene_tensor_batches",
                       "batch_hypotheses", "verification", "max_hypotheses", "repeat_rotation", "repeat_translation",
                       "ambiguity_checks", "ambiguity_rotation", "probe_rivals", "rival_margin", "rival_empty_space_margin",
                       "rival_empty_space_fraction", "rival_dimension_factor"})
@@ -112,6 +113,8 @@ namespace pcl_tensor_python
         .def_readwrite ("region_growing", &R::region_growing)
         .def_readwrite ("overlap_threshold", &R::overlap_threshold)
         .def_readwrite ("correlation_threshold", &R::correlation_threshold)
+        .def_readwrite ("fallback_overlap_threshold", &R::fallback_overlap_threshold)
+        .def_readwrite ("fallback_correlation_threshold", &R::fallback_correlation_threshold)
         .def_readwrite ("theta_bin_width", &R::theta_bin_width)
         .def_readwrite ("order", &R::order)
         .def_readwrite ("scene_tensor_batches", &R::scene_tensor_batches)

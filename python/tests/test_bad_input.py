@@ -51,7 +51,8 @@ def test_unknown_parameters_and_wrong_types_raise_type_error():
 
 
 @pytest.mark.parametrize("params", [
-    dict(grid_size=0), dict(overlap_threshold=1.5), dict(max_hypotheses=-1), dict(preparation=dict(target_faces=2)),
+    dict(grid_size=0), dict(overlap_threshold=1.5), dict(fallback_overlap_threshold=-0.1), dict(max_hypotheses=-1),
+    dict(preparation=dict(target_faces=2)),
     dict(verification=dict(sample_points=0)), dict(object_dimensions=(1.0, -1.0, 1.0)),
 ])
 def test_out_of_range_parameters_raise_value_error(params):

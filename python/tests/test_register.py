@@ -72,6 +72,7 @@ def test_report_has_the_fields_and_transform_of_the_app(ring_views):
 def test_keyword_parameters_mirror_the_parameter_struct(ring_views):
     defaults = pcl_tensor.RegistrationParams()
     assert defaults.grid_size == 10 and defaults.overlap_threshold == pytest.approx(0.5)
+    assert defaults.fallback_overlap_threshold == pytest.approx(0.4) and defaults.fallback_correlation_threshold == pytest.approx(0.4)
     assert defaults.preparation.target_faces == 1000
     assert defaults.order == pcl_tensor.MatchOrder.BEST_FIRST
     assert "max_hypotheses" in pcl_tensor.RegistrationParams._fields

@@ -84,7 +84,7 @@ namespace pcl
     {
       static_assert (sizeof (pcl::registration::TensorVerificationParams) == 112,
                      "a field was added to TensorVerificationParams: add it to pairCacheKey () too");
-      static_assert (sizeof (pcl::registration::TensorRegistrationParams) == 312,
+      static_assert (sizeof (pcl::registration::TensorRegistrationParams) == 320,
                      "a field was added to TensorRegistrationParams: add it to pairCacheKey () too");
       TensorViewCacheKey key;
       key.source = taggedHash ("pair").add (model.source).add (model.preparation).add (scene.source).add (scene.preparation).digest ();
@@ -92,8 +92,8 @@ namespace pcl
       ContentHash hash = taggedHash ("registration");
       hash.add (kVerificationRevision).add (dims.D[0]).add (dims.D[1]).add (dims.D[2]).add (hashTensorParameters (params));
       hash.add (hashPreparation (params.preparation, ScanViewpoint ()));
-      hash.add (params.overlap_threshold).add (params.correlation_threshold).add (params.theta_bin_width)
-          .add (static_cast<int> (params.order)).add (params.scene_tensor_batches).add (params.batch_hypotheses)
+      hash.add (params.overlap_threshold).add (params.correlation_threshold).add (params.fallback_overlap_threshold)
+          .add (params.fallback_correlation_threshold).add (params.theta_bin_width).add (static_cast<int> (params.order)).add (params.scene_tensor_batches).add (params.batch_hypotheses)
           .add (params.max_hypotheses).add (params.repeat_rotation).add (params.repeat_translation)
           .add (params.ambiguity_checks).add (params.ambiguity_rotation).add (params.probe_rivals).add (params.rival_margin)
           .add (params.rival_empty_space_margin).add (params.rival_empty_space_fraction).add (params.rival_dimension_factor);

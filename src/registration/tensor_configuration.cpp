@@ -56,6 +56,10 @@ namespace pcl
       if (params.scene_tensor_batches < 1 || params.batch_hypotheses < 0)
         PCL_TENSOR_THROW (BadArgumentException, "the scene's tensors need at least one batch and a non-negative number of "
                           "hypotheses per batch, got " << params.scene_tensor_batches << " and " << params.batch_hypotheses);
+      if (!(params.fallback_overlap_threshold >= 0.0f && params.fallback_overlap_threshold <= 1.0f) ||
+          !(params.fallback_correlation_threshold >= -1.0f && params.fallback_correlation_threshold <= 1.0f))
+        PCL_TENSOR_THROW (BadArgumentException, "the second round's thresholds must be in [0, 1] and [-1, 1], got "
+                          << params.fallback_overlap_threshold << " and " << params.fallback_correlation_threshold);
       if (params.max_hypotheses < 0)
         PCL_TENSOR_THROW (BadArgumentException, "the hypothesis cap must be 0 (none) or positive, got " << params.max_hypotheses);
       if (!(params.repeat_rotation >= 0.0 && params.repeat_translation >= 0.0) ||

@@ -1,7 +1,8 @@
 /*
  * pcl_tensor: the hypothesis search of pairwise registration (private to the library): tensor
  * matching and verification through the PCL correspondence estimator and rejector, the scene's
- * tensors batch by batch (Fig. 7), refuted repeats skipped and the ambiguity check.
+ * tensors batch by batch (Fig. 7), refuted repeats skipped, the ambiguity check, and a second round of
+ * the matches under t_r or t_c when the first settles nothing.
  */
 #include "tensor_hypothesis_search.h"
 #include "tensor_configuration.h"
@@ -165,24 +166,28 @@ namespace pcl
               pcl::StopWatch watch;
               CorrespondenceEstimationTensor estimation;
               configureMatcher (estimation, params_);
+              // One pass at the second round's thresholds: its matches wait in below_thresholds_.
+              estimation.setOverlapThreshold (secondOverlapThreshold ());
+              estimation.setCorrelationThreshold (secondCorrelationThreshold ());
               estimation.setInputSource (batch);
               estimation.setInputTarget (model_tensors_);
               pcl::Correspondences correspondences;
               estimation.determineCorrespondences (correspondences);
-              report_.matches += correspondences.size ();
+              std::vector<TensorMatch> matches = estimation.getMatches ();
+              const auto below = std::stable_partition (matches.begin (), matches.end (), [this] (const TensorMatch& m) {
+                return m.overlap_ratio >= params_.overlap_threshold && m.correlation >= params_.correlation_threshold;
+              });
+              keep (below, matches.end (), first, below_thresholds_);
+              matches.erase (below, matches.end ());
+              report_.matches += matches.size ();
               report_.comparisons += estimation.getComparisons ();
               report_.timings.matching_ms += watch.getTime ();
               watch.reset ();
-              const std::vector<TensorMatch> matches = estimation.getMatches ();
               const std::size_t now = budget > 0 ? std::min (budget, matches.size ()) : matches.size ();
               // The deferred matches may still serve as rivals of a pose this batch verifies.
               const bool done = verify (matches, now, batch, first);
               if (!done)
-                for (auto m = matches.begin () + static_cast<std::ptrdiff_t> (now); m != matches.end (); ++m)
-                {
-                  deferred_.push_back (*m);
-                  deferred_.back ().scene += static_cast<int> (first);
-                }
+                keep (matches.begin () + static_cast<std::ptrdiff_t> (now), matches.end (), first, deferred_);
               report_.timings.verification_ms += watch.getTime ();
               return done;
             }
@@ -199,7 +204,43 @@ namespace pcl
               report_.timings.verification_ms += watch.getTime ();
             }
 
+            /** The second round (TensorRegistrationParams::fallback_overlap_threshold): when the first
+              * found neither a pose nor a doubt and the cap is not reached, the matches search() found below
+              * t_r or t_c, all batches' together in the matcher's order, on \a scene_tensors. */
+            void
+            searchBelowThresholds (const TensorCloud::ConstPtr& scene_tensors)
+            {
+              if (!report_.registered && !report_.ambiguous && !capReached ())
+              {
+                pcl::StopWatch watch;
+                sortTensorMatches (below_thresholds_, params_.order);
+                report_.matches += below_thresholds_.size ();
+                verify (below_thresholds_, below_thresholds_.size (), scene_tensors, 0);
+                report_.timings.verification_ms += watch.getTime ();
+              }
+              below_thresholds_.clear ();
+            }
+
           private:
+            /** t_r and t_c of the second round, never above the first's. */
+            float secondOverlapThreshold () const { return std::min (params_.fallback_overlap_threshold, params_.overlap_threshold); }
+            float secondCorrelationThreshold () const
+            {
+              return std::min (params_.fallback_correlation_threshold, params_.correlation_threshold);
+            }
+
+            /** Append [\a begin, \a end) to \a kept, their scene indices moved past the \a first tensors of earlier batches. */
+            static void
+            keep (std::vector<TensorMatch>::const_iterator begin, std::vector<TensorMatch>::const_iterator end, std::size_t first,
+                  std::vector<TensorMatch>& kept)
+            {
+              for (auto m = begin; m != end; ++m)
+              {
+                kept.push_back (*m);
+                kept.back ().scene += static_cast<int> (first);
+              }
+            }
+
             bool
             capReached () const
             {
@@ -393,6 +434,7 @@ namespace pcl
             Eigen::Vector4f scene_centroid_;  ///< where poses are compared (homogeneous)
             double far_distance_;             ///< mean(D) / 2: a pose moving the centroid farther is another pose
             std::vector<TensorMatch> deferred_;  ///< scene indices into all batches' tensors
+            std::vector<TensorMatch> below_thresholds_;  ///< below t_r or t_c: the second round's; indices as deferred_'s
         };
 
         /** The scene's tensors batch by batch, each matched and verified before the next (Fig. 7). */
@@ -445,6 +487,7 @@ namespace pcl
           hypotheses.search (scene.tensors, 0);
         else
           searchInBatches (hypotheses, scene, batches, dims, params, report);
+        hypotheses.searchBelowThresholds (scene_tensors);
       }
     }
   }

@@ -51,6 +51,15 @@ namespace pcl
       float overlap_threshold = 0.5f;
       /** t_c, minimum correlation C_c (Eq. 6; Section 4: 0.5). */
       float correlation_threshold = 0.5f;
+      /** When no match over t_r and t_c leads to a registration or a doubt and the hypothesis cap is
+        * not reached, the matches over these lower thresholds that fell short of t_r or t_c are verified
+        * next, best first (default 0.4 each; at or above t_r and t_c: no second round). A pair under half
+        * overlap has few tensors whose cube the other view shows whole, so its true match often falls
+        * just short of t_r or t_c; lowering them outright instead puts its hypotheses behind those of
+        * pairs that register now, past the cap.
+        * \note Beyond the paper; see doc/design.md#second-round-of-matches. */
+      float fallback_overlap_threshold = 0.4f;
+      float fallback_correlation_threshold = 0.4f;
       /** Delta theta_d of the index table, degrees (Section 2: 5). */
       double theta_bin_width = 5.0;
       /** The order in which matches are verified.

@@ -23,7 +23,7 @@ namespace pcl
       /** Takes scene (source) points into the model's (target) frame; identity when not registered. */
       Eigen::Matrix4f transform = Eigen::Matrix4f::Identity ();
       std::size_t model_tensors = 0, scene_tensors = 0;
-      std::size_t matches = 0;           ///< tensor pairs above t_r and t_c
+      std::size_t matches = 0;           ///< tensor pairs above t_r and t_c, and those of the second round when it ran (fallback_overlap_threshold)
       std::size_t comparisons = 0;       ///< tensor pairs compared (mu, Eq. 13)
       std::size_t hypotheses_tried = 0;  ///< matches verified until one passed (or all failed)
       std::size_t hypotheses_skipped = 0;  ///< repeats of hypotheses that ICP refuted
