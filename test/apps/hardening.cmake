@@ -56,7 +56,7 @@ pcl_tensor_case(app_register_coplanar_twice 3 COMMAND ${REGISTER} ${BAD}/coplana
 pcl_tensor_case(app_register_same_file_twice 0 COMMAND ${REGISTER} ${VIEW1} ${VIEW1})
 pcl_tensor_case(app_register_identical_copies 0 COMMAND ${REGISTER} ${VIEW1} ${BAD}/copy/view_01.ply)
 # Parameters out of range.
-foreach(option "--grid;0" "--grid;-3" "--faces;3" "--faces;-1" "--tr;1.5" "--tc;2" "--nc;0" "--max-hypotheses;-1"
+foreach(option "--grid;0" "--grid;-3" "--faces;3" "--faces;-1" "--tr;1.5" "--tc;2" "--fallback;-0.1" "--nc;0" "--max-hypotheses;-1"
                "--count;all"
                "--dims;0,1,1" "--viewpoint;1,2")
   string(REGEX REPLACE "[^a-z0-9]+" "_" tag "${option}")
