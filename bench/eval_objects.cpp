@@ -108,7 +108,7 @@ namespace
                  "  --rival-dimension-factor F  a rival refused by D alone is judged with F times the dimension\n"
                  "                     tolerances (1: as answers are; default %g)\n"
                  "  --tr T, --tc T     tensor matching thresholds t_r and t_c, Eq. 5 and 6 (default %g, %g)\n"
-                 "  --fallback T       second round of matches over T for t_r and t_c (default %g; 0.5: none)\n"
+                 "  --fallback T       second round of matches over T for t_r and t_c (default %g; t_r, t_c or more: none)\n"
                  "  --order O          order of hypotheses: best or scene (default %s)\n"
                  "  --fpfh             also PCL's FPFH + SampleConsensusPrerejective + the same ICP on every pair (one\n"
                  "                     thread: PCL draws with std::rand)\n"

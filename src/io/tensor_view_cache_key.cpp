@@ -93,7 +93,8 @@ namespace pcl
       hash.add (kVerificationRevision).add (dims.D[0]).add (dims.D[1]).add (dims.D[2]).add (hashTensorParameters (params));
       hash.add (hashPreparation (params.preparation, ScanViewpoint ()));
       hash.add (params.overlap_threshold).add (params.correlation_threshold).add (params.fallback_overlap_threshold)
-          .add (params.fallback_correlation_threshold).add (params.theta_bin_width).add (static_cast<int> (params.order)).add (params.scene_tensor_batches).add (params.batch_hypotheses)
+          .add (params.fallback_correlation_threshold).add (params.theta_bin_width).add (static_cast<int> (params.order))
+          .add (params.scene_tensor_batches).add (params.batch_hypotheses)
           .add (params.max_hypotheses).add (params.repeat_rotation).add (params.repeat_translation)
           .add (params.ambiguity_checks).add (params.ambiguity_rotation).add (params.probe_rivals).add (params.rival_margin)
           .add (params.rival_empty_space_margin).add (params.rival_empty_space_fraction).add (params.rival_dimension_factor);

@@ -83,7 +83,7 @@ namespace pcl
           }
           TensorMatch match;
           comparator.compare ((*target_)[m], match);
-          if (match.overlap_ratio < overlap_threshold_ || match.correlation < correlation_threshold_)
+          if (!passesThresholds (match, overlap_threshold_, correlation_threshold_))
             continue;
           match.model = m;
           match.scene = scene_index;

@@ -175,7 +175,7 @@ namespace pcl
               estimation.determineCorrespondences (correspondences);
               std::vector<TensorMatch> matches = estimation.getMatches ();
               const auto below = std::stable_partition (matches.begin (), matches.end (), [this] (const TensorMatch& m) {
-                return m.overlap_ratio >= params_.overlap_threshold && m.correlation >= params_.correlation_threshold;
+                return passesThresholds (m, params_.overlap_threshold, params_.correlation_threshold);
               });
               keep (below, matches.end (), first, below_thresholds_);
               matches.erase (below, matches.end ());

@@ -18,8 +18,8 @@ namespace pcl
         * given (Fig. 7); then, when none settled the pair, the matches under t_r or t_c over the second
         * round's thresholds (TensorRegistrationParams::fallback_overlap_threshold). The scene's tensors
         * are computed in params.scene_tensor_batches batches when \a scene has none, and the model's when
-        * \a model has none. With \a guess (between the centred
-        * meshes), it is verified first and taken when it passes.
+        * \a model has none. With \a guess (between the centred meshes), it is verified first and taken
+        * when it passes.
         * \param[in,out] report filled in, transforms between the centred meshes; its preparation time
         * is left as it is
         */

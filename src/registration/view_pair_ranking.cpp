@@ -118,7 +118,7 @@ namespace pcl
             }
             TensorMatch match;
             comparator.compare ((*model.tensors)[m], match);
-            if (match.overlap_ratio >= params_.overlap_threshold && match.correlation >= params_.correlation_threshold)
+            if (passesThresholds (match, params_.overlap_threshold, params_.correlation_threshold))
               found.emplace_back (match.correlation, m);
           }
           // The best few of each tensor: a true partner is among them, and more would only add noise.

@@ -58,6 +58,13 @@ namespace pcl
       return union_bins > 0.0 ? static_cast<float> (n_q / union_bins) : 0.0f;
     }
 
+    /** \brief Whether \a match passes Section 4's thresholds: R_O >= t_r (Eq. 5) and C_c >= t_c (Eq. 6). */
+    inline bool
+    passesThresholds (const TensorMatch& match, float t_r, float t_c)
+    {
+      return match.overlap_ratio >= t_r && match.correlation >= t_c;
+    }
+
     /** \brief Compares one scene tensor against many model tensors quickly: the scene tensor is
       * scattered once into a dense grid, then each model tensor costs one pass over its non-zero bins.
       * \ingroup registration
