@@ -8,12 +8,14 @@
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
 #include <pcl/console/time.h>
-#include <pcl/io/ply_io.h>
+#include <pcl/io/point_cloud_ply.h>
 #include <pcl/io/range_scan_io.h>
 #include <pcl/io/registration_report_json.h>
 #include <pcl/registration/tensor_registration.h>
 
+#include <future>
 #include <iostream>
+#include <thread>
 
 using namespace pcl::console;
 
@@ -119,15 +121,20 @@ namespace
 
     pcl::registration::TensorRegistration registration;
     registration.setParams (parseParams (argc, argv));
-    registration.setNumberOfThreads (pcl_tensor_tools::parseThreads (argc, argv));
+    const unsigned threads = pcl_tensor_tools::parseThreads (argc, argv);
+    registration.setNumberOfThreads (threads);
     pcl::ObjectDimensions dims;
     if (pcl_tensor_tools::parseObjectDimensions (argc, argv, dims.D))
       registration.setObjectDimensions (dims);
 
     TicToc timer;
     timer.tic ();
+    // The scene is read beside the model when more than one thread may run (a model error is still the one reported).
+    const bool side_by_side = threads != 1 && std::thread::hardware_concurrency () > 1;
+    auto read_scene = std::async (side_by_side ? std::launch::async : std::launch::deferred,
+                                  [&files] { return pcl::io::loadRangeScan (files[1]); });
     const pcl::io::RangeScan model = pcl::io::loadRangeScan (files[0]);
-    const pcl::io::RangeScan scene = pcl::io::loadRangeScan (files[1]);
+    const pcl::io::RangeScan scene = read_scene.get ();
     const double load_ms = timer.toc ();
     registration.setInputTarget (model.cloud);
     registration.setInputSource (scene.cloud);
@@ -157,8 +164,8 @@ namespace
                   << " hypotheses passed verification" << std::endl;
       return kExitNotRegistered;
     }
-    if (!output.empty () && pcl::io::savePLYFileBinary (output, aligned) < 0)
-      PCL_TENSOR_THROW (pcl::IOException, "cannot write '" << output << "'");
+    if (!output.empty ())
+      pcl::io::savePointCloudPLY (output, aligned);
     return kExitRegistered;
   }
 }

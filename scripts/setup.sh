@@ -8,7 +8,7 @@ if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   ca-certificates cmake g++ make \
-  libpcl-dev libmeshoptimizer-dev nlohmann-json3-dev \
+  libpcl-dev libqhull-dev libmeshoptimizer-dev nlohmann-json3-dev \
   pybind11-dev python3-dev python3-numpy python3-pytest python3-distributed \
   libgtest-dev googletest libbenchmark-dev \
   clang libclang-rt-14-dev > /dev/null

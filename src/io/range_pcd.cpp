@@ -4,9 +4,9 @@
 #include <pcl/io/range_pcd.h>
 #include "ascii_number.h"
 #include "file_input.h"
+#include "lzf_decompress.h"
 #include <pcl/io/range_scan_io.h>  // updateDenseFlag
 #include <pcl/common/tensor_exceptions.h>
-#include <pcl/io/lzf.h>
 
 #include <algorithm>
 #include <charconv>
@@ -258,7 +258,8 @@ namespace pcl
         if (sizes[0] > data.size () - sizeof (sizes))
           dataError (path, "binary_compressed data cut short");
         std::vector<char> raw (expected);
-        if (expected > 0 && pcl::lzfDecompress (data.data () + sizeof (sizes), sizes[0], raw.data (), sizes[1]) != expected)
+        if (expected > 0 && !detail::lzfDecompress (reinterpret_cast<const unsigned char*> (data.data ()) + sizeof (sizes),
+                                                    sizes[0], reinterpret_cast<unsigned char*> (raw.data ()), expected))
           dataError (path, "binary_compressed data that do not uncompress to their stated size");
         cloud.resize (h.points);
         const std::size_t kx = fieldIndex (h, "x"), ky = fieldIndex (h, "y"), kz = fieldIndex (h, "z");

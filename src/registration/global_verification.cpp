@@ -4,7 +4,7 @@
 #include <pcl/registration/global_verification.h>
 #include <pcl/common/tensor_exceptions.h>
 
-#include <pcl/surface/convex_hull.h>
+#include "../common/convex_hull_vertices.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -66,22 +66,8 @@ namespace pcl
       {
         if (points.size () < 4 || flat)
           return points;
-        pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
-        cloud->reserve (points.size ());
-        for (const auto& p : points)
-          cloud->push_back (pcl::PointXYZ (p.x (), p.y (), p.z ()));
-        pcl::ConvexHull<pcl::PointXYZ> hull;
-        hull.setInputCloud (cloud);
-        hull.setDimension (3);
-        pcl::PointCloud<pcl::PointXYZ> vertices;
-        hull.reconstruct (vertices);
-        if (vertices.size () < 4)
-          return points;
-        std::vector<Eigen::Vector3f> out;
-        out.reserve (vertices.size ());
-        for (const auto& v : vertices)
-          out.push_back (v.getVector3fMap ());
-        return out;
+        std::vector<Eigen::Vector3f> vertices = detail::convexHullVertices (points);
+        return vertices.size () < 4 ? points : vertices;
       }
     }
 
