@@ -108,6 +108,39 @@ TEST (CorrespondenceRejectorTensorVerification, VerifyReportsTheFailingStage)
   EXPECT_GE (result.fine_correspondences, 2.0 * result.required_correspondences);
 }
 
+// The ICP stage check: one that always goes on changes nothing; one that stops abandons the hypothesis
+// as failing the fine count, its first stage's pose kept; refine() does not ask it.
+TEST (CorrespondenceRejectorTensorVerification, IcpStageCheckCanAbandonAHypothesis)
+{
+  CorrespondenceRejectorTensorVerification rejector;
+  setUp (rejector, 0, 1);
+  // The exact pose, moved 1 degree and 2 d_res: ICP has work to do.
+  const Eigen::Matrix4f exact = (views ()[0].pose.inverse () * views ()[1].pose).matrix ().cast<float> ();
+  Eigen::Affine3f nudge (Eigen::AngleAxisf (static_cast<float> (M_PI / 180.0), Eigen::Vector3f::UnitZ ()));
+  nudge.translation () = Eigen::Vector3f (2.0f * static_cast<float> (rejector.getResolution ()), 0.0f, 0.0f);
+  const Eigen::Matrix4f start = nudge.matrix () * exact;
+  TensorVerificationResult plain, checked, abandoned;
+  ASSERT_TRUE (rejector.verify (start, plain)) << toString (plain.stage);
+  EXPECT_FALSE (plain.icp_abandoned);
+  ASSERT_GE (plain.icp_stage_transforms.size (), 2u);
+  EXPECT_EQ (plain.icp_stage_transforms.back (), plain.transform);
+
+  std::size_t calls = 0;
+  rejector.setIcpStageCheck ([&calls] (std::size_t, const Eigen::Matrix4f&) { ++calls; return true; });
+  ASSERT_TRUE (rejector.verify (start, checked));
+  EXPECT_EQ (calls, plain.icp_stage_transforms.size () - 1);
+  EXPECT_EQ (checked.transform, plain.transform);
+  EXPECT_EQ (checked.fine_correspondences, plain.fine_correspondences);
+
+  rejector.setIcpStageCheck ([] (std::size_t, const Eigen::Matrix4f&) { return false; });
+  EXPECT_FALSE (rejector.verify (start, abandoned));
+  EXPECT_EQ (abandoned.stage, TensorVerificationStage::FINE_OVERLAP);
+  EXPECT_TRUE (abandoned.icp_abandoned);
+  ASSERT_EQ (abandoned.icp_stage_transforms.size (), 1u);
+  EXPECT_EQ (abandoned.icp_stage_transforms[0], plain.icp_stage_transforms[0]);
+  EXPECT_EQ (rejector.refine (start), plain.transform) << "refine () runs every stage";
+}
+
 // verify ()'s dimension factor widens the checks against D (Eq. 9) and nothing else: the exact pose,
 // refused against a D a fifth too short, passes with it, and a pose without overlap still fails its count.
 TEST (CorrespondenceRejectorTensorVerification, DimensionFactorWidensOnlyTheChecksAgainstD)

@@ -195,3 +195,33 @@ TEST (PointToPlaneIcp, SubsampledCoarseStagePairsOnlyItsSample)
   expectTruthRecovered (subsampled.transform, c.truth);
   EXPECT_EQ (subsampled.pairs, (c.source.size () + 1) / 2);  // the last stage pairs every point: the even ones
 }
+
+// continue_after_stage: told each stage's pose before the last, it can end the refinement; a check that
+// always goes on leaves the result as it is without one.
+TEST (PointToPlaneIcp, StageCheckSeesEachStageAndCanEndTheRefinement)
+{
+  const KnownMotionCase c (7);
+  auto params = stagedParams ();  // stages at 8, 4, 2 and 1 mm
+  const auto plain = pcl::registration::pointToPlaneIcp (c.source, c.target, c.search, Eigen::Matrix4f::Identity (), params);
+  ASSERT_EQ (plain.stage_transforms.size (), 4u);
+  EXPECT_EQ (plain.stage_transforms.back (), plain.transform);
+  EXPECT_FALSE (plain.abandoned);
+
+  std::vector<std::size_t> seen;
+  params.continue_after_stage = [&seen] (std::size_t stage, const Eigen::Matrix4f&) { seen.push_back (stage); return true; };
+  const auto checked = pcl::registration::pointToPlaneIcp (c.source, c.target, c.search, Eigen::Matrix4f::Identity (), params);
+  EXPECT_EQ (seen, (std::vector<std::size_t>{0, 1, 2})) << "called after every stage but the last";
+  EXPECT_EQ (checked.transform, plain.transform);
+  EXPECT_EQ (checked.iterations, plain.iterations);
+  EXPECT_FALSE (checked.abandoned);
+
+  // Ending after the second stage: its pose is the result, and the later stages do not run.
+  params.continue_after_stage = [] (std::size_t stage, const Eigen::Matrix4f&) { return stage < 1; };
+  const auto ended = pcl::registration::pointToPlaneIcp (c.source, c.target, c.search, Eigen::Matrix4f::Identity (), params);
+  EXPECT_TRUE (ended.abandoned);
+  EXPECT_FALSE (ended.stopped_early);
+  ASSERT_EQ (ended.stage_transforms.size (), 2u);
+  EXPECT_EQ (ended.stage_transforms[1], plain.stage_transforms[1]);
+  EXPECT_EQ (ended.transform, plain.stage_transforms[1]);
+  EXPECT_LT (ended.iterations, plain.iterations);
+}

@@ -360,7 +360,8 @@ namespace pcl
     }
 
     PointToPlaneIcpResult
-    CorrespondenceRejectorTensorVerification::icp (const Eigen::Matrix4f& hypothesis, std::size_t min_pairs) const
+    CorrespondenceRejectorTensorVerification::icp (const Eigen::Matrix4f& hypothesis, std::size_t min_pairs,
+                                                   bool check_stages) const
     {
       const double d_res = getResolution ();
       PointToPlaneIcpParams icp;
@@ -370,6 +371,8 @@ namespace pcl
       icp.min_translation = 1e-3 * d_res;
       icp.coarse_stage_step = params_.icp_coarse_stage_step;
       icp.min_pairs = min_pairs;
+      if (check_stages)
+        icp.continue_after_stage = icp_stage_check_;
       return pointToPlaneIcp (*scene_sample_, *model_->fine.cloud, model_search_, hypothesis, icp);
     }
 
@@ -414,9 +417,16 @@ namespace pcl
       // need not run.
       if (run_icp)
       {
-        const PointToPlaneIcpResult refined = icp (start, icpMinPairs ());
+        PointToPlaneIcpResult refined = icp (start, icpMinPairs (), true);
         result.transform = refined.transform;
         result.icp_fitness = refined.rms;
+        result.icp_stage_transforms = std::move (refined.stage_transforms);
+        if (refined.abandoned)
+        {
+          result.icp_abandoned = true;
+          result.stage = TensorVerificationStage::FINE_OVERLAP;
+          return false;
+        }
       }
 
       // Steps 11-12: twice n_c correspondences within d_res, over every point; the samples

@@ -132,6 +132,12 @@ namespace pcl
         // A subsample too small to solve for six unknowns would end the refinement for nothing.
         stride = std::max<std::size_t> (1, std::min (stride, source.size () / 64));
         iterate (source, stride, target, search, params, stages[s], last ? 1.0 : params.coarse_stage_tolerance, hints, result);
+        result.stage_transforms.push_back (result.transform);
+        if (!last && params.continue_after_stage && !params.continue_after_stage (s, result.transform))
+        {
+          result.abandoned = true;
+          break;
+        }
       }
       return result;
     }

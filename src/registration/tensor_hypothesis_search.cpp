@@ -135,7 +135,14 @@ namespace pcl
               configureVerifier (verification_, model_with_tensors, scene_tensors, scene, dims, params);
               report.resolution = verification_.getResolution ();
               refuted_ = RefutedHypotheses (params.repeat_rotation, params.repeat_translation * report.resolution);
+              verification_.setIcpStageCheck ([this] (std::size_t stage, const Eigen::Matrix4f& pose) {
+                return stage >= icp_dead_ends_.size () || !icp_dead_ends_[stage].contains (pose);
+              });
             }
+
+            // The verifier's ICP stage check points at this search's dead ends.
+            HypothesisSearch (const HypothesisSearch&) = delete;
+            HypothesisSearch& operator= (const HypothesisSearch&) = delete;
 
             /** The caller's guess, verified before any tensor match: taken when it passes. */
             bool
@@ -241,6 +248,20 @@ namespace pcl
               }
             }
 
+            /** The poses at which the ICP of a hypothesis that then failed the fine count ended its stages:
+              * a later ICP that ends a stage there would fail it the same way (the fine count does not
+              * depend on the dimension factor, so this holds for rivals too). */
+            void
+            addDeadEnds (const std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>>& stage_poses)
+            {
+              for (std::size_t k = 0; k < stage_poses.size (); ++k)
+              {
+                if (icp_dead_ends_.size () <= k)
+                  icp_dead_ends_.emplace_back (params_.repeat_rotation, params_.repeat_translation * report_.resolution);
+                icp_dead_ends_[k].add (stage_poses[k]);
+              }
+            }
+
             bool
             capReached () const
             {
@@ -262,6 +283,8 @@ namespace pcl
               {
                 if (result.stage == TensorVerificationStage::FINE_OVERLAP || result.stage == TensorVerificationStage::FINE_DIMENSIONS)
                   refuted_.add (hypothesis);
+                if (result.stage == TensorVerificationStage::FINE_OVERLAP && !result.icp_abandoned)
+                  addDeadEnds (result.icp_stage_transforms);
                 return false;
               }
               if (accept_ && !accept_ (result))
@@ -431,6 +454,7 @@ namespace pcl
             const HypothesisAcceptor& accept_;
             CorrespondenceRejectorTensorVerification verification_;
             RefutedHypotheses refuted_{0.0, 0.0};
+            std::vector<RefutedHypotheses> icp_dead_ends_;  ///< per ICP stage (addDeadEnds())
             Eigen::Vector4f scene_centroid_;  ///< where poses are compared (homogeneous)
             double far_distance_;             ///< mean(D) / 2: a pose moving the centroid farther is another pose
             std::vector<TensorMatch> deferred_;  ///< scene indices into all batches' tensors

@@ -16,6 +16,7 @@
 #include <pcl/surface/scan_preparation.h>
 
 #include <memory>
+#include <functional>
 #include <vector>
 
 namespace pcl
@@ -75,6 +76,18 @@ namespace pcl
           * (0, 1] and the distances positive, else any pose (even a wrong one) could pass verification */
         void setParams (const TensorVerificationParams& params);
         const TensorVerificationParams& getParams () const { return params_; }
+
+        /** \brief Called with the stage and pose each time a stage of verify()'s ICP ends, but the last:
+          * false abandons the hypothesis there, as failing FINE_OVERLAP (TensorVerificationResult::
+          * icp_abandoned). A search that keeps the stage poses of its hypotheses that failed the fine
+          * count (TensorVerificationResult::icp_stage_transforms) spares the later stages of one that
+          * reaches such a pose, as it would fail that count the same way. refine() does not call it.
+          * Empty (default): every ICP runs to its end. */
+        void
+        setIcpStageCheck (std::function<bool (std::size_t stage, const Eigen::Matrix4f& pose)> check)
+        {
+          icp_stage_check_ = std::move (check);
+        }
 
         /** \brief Stop after this many correspondences have passed (0: verify them all; default 0). */
         void setMaxAccepted (std::size_t n) { max_accepted_ = n; }
@@ -181,8 +194,9 @@ namespace pcl
           * coarse stage's wider distance, and the pose would fail that count. */
         std::size_t icpMinPairs () const;
         /** verify()'s ICP from \a hypothesis on the scene's sample; stages before the last end with
-          * fewer than \a min_pairs pairs (PointToPlaneIcpParams::min_pairs). */
-        PointToPlaneIcpResult icp (const Eigen::Matrix4f& hypothesis, std::size_t min_pairs) const;
+          * fewer than \a min_pairs pairs (PointToPlaneIcpParams::min_pairs), and with \a check_stages
+          * when the stage check says so. */
+        PointToPlaneIcpResult icp (const Eigen::Matrix4f& hypothesis, std::size_t min_pairs, bool check_stages = false) const;
         /** The z-buffer of \a view, from \a memo when it has one; background farther than \a empty_margin
           * d_res from the surface is marked empty when \a empty_margin is positive. */
         RangeViewProjectionMemo::Projection projectView (const shared_ptr<const PreparedScan>& view,
@@ -213,6 +227,7 @@ namespace pcl
         std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> accepted_transforms_;
         std::vector<TensorMatch> input_matches_;
         std::vector<TensorVerificationResult> results_;
+        std::function<bool (std::size_t, const Eigen::Matrix4f&)> icp_stage_check_;
     };
   }
 }

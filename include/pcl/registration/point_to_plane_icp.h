@@ -8,6 +8,10 @@
 #include <pcl/point_types.h>
 
 #include <Eigen/Core>
+#include <Eigen/StdVector>
+
+#include <functional>
+#include <vector>
 
 namespace pcl
 {
@@ -41,6 +45,11 @@ namespace pcl
         * stage pairs every point, so the final pose rests on them all. Pair counts (min_pairs,
         * PointToPlaneIcpResult::pairs) are scaled to the whole source. */
       int coarse_stage_step = 1;
+      /** Called when a stage before the last ends, with the stage's index and pose: false ends the
+        * refinement there (PointToPlaneIcpResult::abandoned). A caller that knows the pose to be one
+        * from which an earlier run went on and failed spares the stages that would fail the same way:
+        * from nearly the same pose, the same stage takes nearly the same path. Empty: never. */
+      std::function<bool (std::size_t stage, const Eigen::Matrix4f& pose)> continue_after_stage;
     };
 
     /** \brief What pointToPlaneIcp() converged to. */
@@ -49,6 +58,9 @@ namespace pcl
       Eigen::Matrix4f transform = Eigen::Matrix4f::Identity ();
       int iterations = 0;
       bool stopped_early = false;  ///< a stage ended below min_pairs: the later stages did not run
+      bool abandoned = false;      ///< continue_after_stage ended the refinement: the later stages did not run
+      /** The pose at the end of each stage that ran, in order. */
+      std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> stage_transforms;
       std::size_t pairs = 0;     ///< pairs used in the last iteration (scaled to the whole source in a subsampled stage)
       double rms = 0.0;          ///< RMS point-to-plane distance of those pairs
     };

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include <string>
+#include <vector>
 
 namespace pcl
 {
@@ -151,6 +152,11 @@ namespace pcl
       /** The larger, over both directions, fraction of a view's points that the other view saw
         * and that lie in front of its surface (FREE_SPACE). */
       double free_space_violation = 0.0;
+      /** FINE_OVERLAP without the fine count: the ICP stage check (CorrespondenceRejectorTensorVerification::
+        * setIcpStageCheck()) found the pose where a hypothesis that failed that count had been. */
+      bool icp_abandoned = false;
+      /** ICP's pose at the end of each of its stages that ran (empty when ICP was not reached). */
+      std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> icp_stage_transforms;
 
       bool passed () const { return stage == TensorVerificationStage::PASSED; }
     };
