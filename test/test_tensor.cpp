@@ -726,6 +726,70 @@ TEST (TensorEstimation, RegionGrowingAgreesWithBruteForceOnBunnyScans)
   EXPECT_GE (agree, 0.99);
 }
 
+namespace
+{
+  /** Batch \a batch of \a batches from \a est. */
+  Tensors
+  computeBatch (Estimation& est, int batches, int batch)
+  {
+    est.setPairBatch (batches, batch);
+    Tensors out;
+    est.computeOrThrow (out);
+    return out;
+  }
+
+  /** \a est's batch 0 of 2 equals a new estimation's on \a mesh with d_max \a d_max, bit for bit. */
+  void
+  expectSameAsNew (Estimation& est, const pcl::ScanMesh& mesh, double d_max)
+  {
+    Estimation fresh;
+    fresh.setInputCloud (mesh.cloud);
+    fresh.setInputNormals (mesh.cloud);
+    fresh.setPolygons (mesh.polygons);
+    fresh.setObjectDimensions (exampleDimensions ());
+    fresh.setDistanceLimits (exampleDimensions ().dMin (), d_max);
+    const Tensors expected = computeBatch (fresh, 2, 0);
+    const Tensors got = computeBatch (est, 2, 0);
+    ASSERT_GT (expected.size (), 10u);
+    ASSERT_EQ (got.size (), expected.size ());
+    for (std::size_t k = 0; k < got.size (); ++k)
+    {
+      EXPECT_EQ (got[k].vertex_a, expected[k].vertex_a);
+      EXPECT_EQ (got[k].vertex_b, expected[k].vertex_b);
+      EXPECT_EQ (got[k].bin_index, expected[k].bin_index);
+      EXPECT_EQ (got[k].bin_area, expected[k].bin_area);
+    }
+  }
+}
+
+TEST (TensorEstimation, OneEstimationForEveryBatchRedoesWhatChanged)
+{
+  // The pipeline computes a view's batches with one estimation, which meshes and pairs once; a
+  // changed cloud (in place, same pointer), setting or mesh must still give what a new one gives.
+  pcl::ScanMesh mesh = coarseExampleObject ();
+  const double d_max = exampleDimensions ().dMax ();
+  Estimation est;
+  est.setInputCloud (mesh.cloud);
+  est.setInputNormals (mesh.cloud);
+  est.setPolygons (mesh.polygons);
+  est.setObjectDimensions (exampleDimensions ());
+  const Tensors first = computeBatch (est, 2, 1);
+  expectSameAsNew (est, mesh, d_max);
+  EXPECT_EQ (computeBatch (est, 2, 1).size (), first.size ());
+
+  // Stretched in place: other distances, so other pairs, and the search tree must follow.
+  for (auto& p : *mesh.cloud)
+    p.x *= 1.25f;
+  expectSameAsNew (est, mesh, d_max);
+
+  est.setDistanceLimits (exampleDimensions ().dMin (), 0.8 * d_max);
+  expectSameAsNew (est, mesh, 0.8 * d_max);
+
+  mesh.polygons.resize (mesh.polygons.size () / 2);
+  est.setPolygons (mesh.polygons);
+  expectSameAsNew (est, mesh, 0.8 * d_max);
+}
+
 TEST (TensorEstimation, PairBatchesPartitionTheTensors)
 {
   // Three batches hold every tensor of the whole view exactly once, each the same tensor.

@@ -23,6 +23,17 @@ namespace pcl
       }
 
       void
+      configureViewEstimation (ViewTensorEstimation& estimation, const PreparedScan& scan, const ObjectDimensions& dims,
+                               const TensorRegistrationParams& params)
+      {
+        estimation.setInputCloud (scan.reduced.cloud);
+        estimation.setInputNormals (scan.reduced.cloud);
+        estimation.setPolygons (scan.reduced.polygons);
+        estimation.setObjectDimensions (dims);
+        configureEstimation (estimation, params);
+      }
+
+      void
       configureMatcher (CorrespondenceEstimationTensor& matcher, const TensorRegistrationParams& params)
       {
         matcher.setOverlapThreshold (params.overlap_threshold);
@@ -84,12 +95,8 @@ namespace pcl
                         int batches, int batch)
     {
       detail::ViewTensorEstimation estimation;
+      detail::configureViewEstimation (estimation, scan, dims, params);
       estimation.setPairBatch (batches, batch);
-      estimation.setInputCloud (scan.reduced.cloud);
-      estimation.setInputNormals (scan.reduced.cloud);
-      estimation.setPolygons (scan.reduced.polygons);
-      estimation.setObjectDimensions (dims);
-      detail::configureEstimation (estimation, params);
       pcl::PointCloud<pcl::TensorDescriptor>::Ptr tensors (new pcl::PointCloud<pcl::TensorDescriptor>);
       estimation.computeOrThrow (*tensors);
       return tensors;

@@ -21,6 +21,11 @@ namespace pcl
       void
       configureEstimation (ViewTensorEstimation& estimation, const TensorRegistrationParams& params);
 
+      /** \a estimation set to compute \a scan's tensors (its reduced mesh) with Eqs. 2-3 from \a dims. */
+      void
+      configureViewEstimation (ViewTensorEstimation& estimation, const PreparedScan& scan, const ObjectDimensions& dims,
+                               const TensorRegistrationParams& params);
+
       /** The matcher's thresholds, index and order from \a params. */
       void
       configureMatcher (CorrespondenceEstimationTensor& matcher, const TensorRegistrationParams& params);

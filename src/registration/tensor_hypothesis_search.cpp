@@ -467,10 +467,15 @@ namespace pcl
                          const ObjectDimensions& dims, const TensorRegistrationParams& params, TensorRegistrationReport& report)
         {
           const auto budget = static_cast<std::size_t> (params.batch_hypotheses);
+          // One estimation for every batch: the scene is meshed and its pairs formed once.
+          ViewTensorEstimation estimation;
+          configureViewEstimation (estimation, *scene.scan, dims, params);
           for (int batch = 0; batch < params.scene_tensor_batches; ++batch)
           {
             pcl::StopWatch watch;
-            const TensorCloud::ConstPtr tensors = computeViewTensors (*scene.scan, dims, params, params.scene_tensor_batches, batch);
+            estimation.setPairBatch (params.scene_tensor_batches, batch);
+            const TensorCloud::Ptr tensors (new TensorCloud);
+            estimation.computeOrThrow (*tensors);
             report.timings.tensors_ms += watch.getTime ();
             const std::size_t first = scene_tensors->size ();
             *scene_tensors += *tensors;

@@ -13,6 +13,8 @@
 
 #include <cmath>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace pcl
@@ -159,7 +161,9 @@ namespace pcl
         * order, every \a batches-th, starting at \a batch. The batches of one view partition its
         * tensors, spread evenly over the view. Fig. 7 computes the scene's tensors one at a time and
         * stops once one match verifies; a caller can do the same a batch at a time
-        * (registerTensorViewsInBatches). Default: one batch, every pair.
+        * (registerTensorViewsInBatches). Default: one batch, every pair. One estimation computing
+        * the batches in turn meshes the surface and forms the pairs once: each compute() checks that
+        * the input, the triangles and the settings are those of the last and redoes what changed.
         * \throw pcl::BadArgumentException unless 0 <= batch < batches */
       void setPairBatch (int batches, int batch)
       {
@@ -240,7 +244,19 @@ namespace pcl
       void computeFeature (PointCloudOut& output) override;
 
     private:
+      /** The settings the pairs depend on: d_min, d_max, the normal angle limits, partners, pairing. */
+      using PairSettings = std::tuple<double, double, double, double, int, TensorPairing>;
+
       bool fail (ErrorKind kind, const std::string& message, bool deinit);
+      /** theta_d of vertices \a i and \a j, in degrees. */
+      double normalAngle (int i, int j) const;
+      /** Each vertex's closest valid partners (Eq. 2 and the angle limits of Section 2), as sorted pairs. */
+      void formPairs ();
+      PairSettings pairSettings () const
+      {
+        return {d_min_, d_max_, min_normal_angle_, max_normal_angle_, partners_per_vertex_, pairing_};
+      }
+      static bool samePolygons (const std::vector<pcl::Vertices>& a, const std::vector<pcl::Vertices>& b);
 
       std::vector<pcl::Vertices> polygons_;
       double d_min_{0.0};
@@ -265,6 +281,13 @@ namespace pcl
       std::vector<Eigen::Vector3d> vertices_;   // validated copies of the input, in double
       std::vector<Eigen::Vector3d> normals_unit_;
       TensorSurfaceGrid grid_;
+      // Kept from one compute() to the next, and checked against the input each time: the batches of
+      // one view (setPairBatch) then mesh the surface and form its pairs once.
+      std::vector<pcl::Vertices> mesh_polygons_;  // the triangles grid_ holds
+      std::vector<std::pair<int, int>> pairs_;    // the valid pairs, sorted
+      pcl::Indices pairs_indices_;                // the indices and settings they were formed with
+      PairSettings pairs_settings_;
+      bool pairs_formed_{false};
   };
 
   /** \brief Compare two tensor clouds computed from the same input with different settings (e.g.

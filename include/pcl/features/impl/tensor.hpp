@@ -139,11 +139,14 @@ pcl::TensorEstimation<PointInT, PointNT, PointOutT>::initCompute ()
   // The pair search is a radius search of d_max on the vertices (Feature's search machinery).
   this->search_radius_ = d_max_ * (1.0 + 1e-6);
   this->k_ = 0;
+  // Feature rebuilds the search tree only for another cloud; one changed in place needs it here too.
+  const auto searched = this->tree_ ? this->tree_->getInputCloud () : nullptr;
   if (!FeatureFromNormals<PointInT, PointNT, PointOutT>::initCompute ())
     return fail (ErrorKind::BAD_ARGUMENT, "PCL feature initialisation failed (see the message above: indices?)", false);
+  const bool tree_rebuilt = searched != this->surface_;
 
   const std::size_t n = input->size ();
-  vertices_.resize (n);
+  std::vector<Eigen::Vector3d> vertices (n);
   for (std::size_t i = 0; i < n; ++i)
   {
     const PointInT& p = (*input)[i];
@@ -153,9 +156,9 @@ pcl::TensorEstimation<PointInT, PointNT, PointOutT>::initCompute ()
       s << "vertex " << i << " is not finite";
       return fail (ErrorKind::INVALID_SCAN, s.str (), true);
     }
-    vertices_[i] = Eigen::Vector3d (p.x, p.y, p.z);
+    vertices[i] = Eigen::Vector3d (p.x, p.y, p.z);
   }
-  normals_unit_.assign (n, Eigen::Vector3d::Zero ());
+  std::vector<Eigen::Vector3d> unit_normals (n, Eigen::Vector3d::Zero ());
   for (const auto i : *this->indices_)
   {
     const PointNT& q = (*normals)[i];
@@ -168,11 +171,25 @@ pcl::TensorEstimation<PointInT, PointNT, PointOutT>::initCompute ()
         << ": every vertex that may be paired needs a normal (Section 2)";
       return fail (ErrorKind::INVALID_SCAN, s.str (), true);
     }
-    normals_unit_[i] = nv / len;
+    unit_normals[i] = nv / len;
   }
+  // The batches of one view (setPairBatch) share its mesh and its pairs: only what changed is set up again.
+  const bool same_vertices = vertices == vertices_;
+  const bool same_surface = same_vertices && samePolygons (polygons_, mesh_polygons_);
+  if (!same_vertices && !tree_rebuilt)
+    this->tree_->setInputCloud (this->surface_);
+  if (!same_surface || unit_normals != normals_unit_ || *this->indices_ != pairs_indices_ || pairSettings () != pairs_settings_)
+    pairs_formed_ = false;
+  vertices_.swap (vertices);
+  normals_unit_.swap (unit_normals);
   try
   {
-    grid_.setMesh (vertices_, polygons_);
+    if (!same_surface)
+    {
+      mesh_polygons_.clear ();
+      grid_.setMesh (vertices_, polygons_);
+      mesh_polygons_ = polygons_;
+    }
     grid_.setGrid (grid_size_, bin_size_);
   }
   catch (const InvalidScanException& e)
@@ -201,22 +218,32 @@ pcl::TensorEstimation<PointInT, PointNT, PointOutT>::computeOrThrow (PointCloudO
 }
 
 //////////////////////////////////////////////////////////////////////////////////////////////
+template <typename PointInT, typename PointNT, typename PointOutT> bool
+pcl::TensorEstimation<PointInT, PointNT, PointOutT>::samePolygons (const std::vector<pcl::Vertices>& a,
+                                                                   const std::vector<pcl::Vertices>& b)
+{
+  return std::equal (a.begin (), a.end (), b.begin (), b.end (),
+                     [] (const pcl::Vertices& p, const pcl::Vertices& q) { return p.vertices == q.vertices; });
+}
+
+//////////////////////////////////////////////////////////////////////////////////////////////
+template <typename PointInT, typename PointNT, typename PointOutT> double
+pcl::TensorEstimation<PointInT, PointNT, PointOutT>::normalAngle (int i, int j) const
+{
+  const Eigen::Vector3d& a = normals_unit_[i];
+  const Eigen::Vector3d& b = normals_unit_[j];
+  return std::atan2 (a.cross (b).norm (), a.dot (b)) * (180.0 / M_PI);
+}
+
+//////////////////////////////////////////////////////////////////////////////////////////////
 template <typename PointInT, typename PointNT, typename PointOutT> void
-pcl::TensorEstimation<PointInT, PointNT, PointOutT>::computeFeature (PointCloudOut& output)
+pcl::TensorEstimation<PointInT, PointNT, PointOutT>::formPairs ()
 {
   const auto& input = *this->input_;
   const std::size_t n = input.size ();
   std::vector<char> candidate (n, 0);
   for (const auto i : *this->indices_)
     candidate[i] = 1;
-
-  const double rad2deg = 180.0 / M_PI;
-  auto normalAngle = [this, rad2deg] (int i, int j)
-  {
-    const Eigen::Vector3d& a = normals_unit_[i];
-    const Eigen::Vector3d& b = normals_unit_[j];
-    return std::atan2 (a.cross (b).norm (), a.dot (b)) * rad2deg;
-  };
 
   // Each vertex's closest valid partners (Eq. 2 and the angle constraints of Section 2).
   std::vector<std::pair<int, int>> directed;
@@ -248,28 +275,39 @@ pcl::TensorEstimation<PointInT, PointNT, PointOutT>::computeFeature (PointCloudO
       directed.emplace_back (std::min (i, valid[k].second), std::max (i, valid[k].second));
   }
   std::sort (directed.begin (), directed.end ());
-  std::vector<std::pair<int, int>> pairs;
-  pairs.reserve (directed.size ());
+  pairs_.clear ();
+  pairs_.reserve (directed.size ());
   for (std::size_t k = 0; k < directed.size ();)
   {
     std::size_t e = k;
     while (e < directed.size () && directed[e] == directed[k])
       ++e;
     if (pairing_ == TensorPairing::EITHER || e - k >= 2)
-      pairs.push_back (directed[k]);
+      pairs_.push_back (directed[k]);
     k = e;
   }
+  pairs_indices_ = *this->indices_;
+  pairs_settings_ = pairSettings ();
+  pairs_formed_ = true;
+}
 
-  // One tensor per pair: frame (Section 2), canonical order, bins.
+//////////////////////////////////////////////////////////////////////////////////////////////
+template <typename PointInT, typename PointNT, typename PointOutT> void
+pcl::TensorEstimation<PointInT, PointNT, PointOutT>::computeFeature (PointCloudOut& output)
+{
+  if (!pairs_formed_)
+    formPairs ();
+  // One tensor per pair of this batch: frame (Section 2), canonical order, bins.
+  const double rad2deg = 180.0 / M_PI;
   const double sin_ambiguity = std::sin (order_ambiguity_angle_ / rad2deg);
   output.clear ();
   const auto stride = static_cast<std::size_t> (pair_batches_);
-  output.reserve (pairs.size () / stride + 1);
+  output.reserve (pairs_.size () / stride + 1);
   faces_visited_ = 0;
   faces_clipped_ = 0;
-  for (std::size_t k = static_cast<std::size_t> (pair_batch_); k < pairs.size (); k += stride)
+  for (std::size_t k = static_cast<std::size_t> (pair_batch_); k < pairs_.size (); k += stride)
   {
-    const auto& pr = pairs[k];
+    const auto& pr = pairs_[k];
     int a = pr.first, b = pr.second;
     const Eigen::Vector3d z = (normals_unit_[a] + normals_unit_[b]).normalized ();
     Eigen::Vector3d d = vertices_[b] - vertices_[a];
