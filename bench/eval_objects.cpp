@@ -99,6 +99,7 @@ namespace
                  "  --fine-dimension-tolerance T   local verification after ICP: allowed excess over D in d_res (default %g)\n"
                  "  --fine-dimension-fraction F  ... or this fraction of mean(D), when larger (0: the paper's; default %g)\n"
                  "  --coarse-dimension-fraction F  before ICP: allowed excess over D as a fraction of mean(D) (default %g)\n"
+                 "  --correspondence-fraction F  n_c = F min(|M_m|, |M_s|): correspondences before ICP, 2 n_c after (default %g)\n"
                  "  --empty-space-margin M  free-space check: points M d_res clear of the other view's surface count (0: off; default %g)\n"
                  "  --checked-dimensions N  largest principal extents the dimension checks compare with D (default %d)\n"
                  "  --no-rival-probe   do not probe rival poses (TensorRegistrationParams::probe_rivals)\n"
@@ -116,7 +117,7 @@ namespace
                  "  --data DIR         third-party data (default %s)\n",
                  name, d.ring, d.step, d.noise, d.threads, d.max_pairs,
                  d.params.verification.fine_dimension_tolerance, d.params.verification.fine_dimension_fraction,
-                 d.params.verification.coarse_dimension_fraction,
+                 d.params.verification.coarse_dimension_fraction, d.params.verification.correspondence_fraction,
                  d.params.verification.empty_space_margin, d.params.verification.checked_dimensions, d.params.rival_margin,
                  d.params.rival_empty_space_margin, d.params.rival_dimension_factor,
                  d.params.overlap_threshold, d.params.correlation_threshold, d.params.fallback_overlap_threshold,
@@ -362,7 +363,8 @@ namespace
       for (const auto& v : {p.truth_violation, p.reported_violation})
         out << ',' << v[0] << ',' << v[1] << ',' << v[2];
       out << ',' << p.fpfh.registered << ',' << p.fpfh.correct << ',' << p.fpfh.rotation_error_deg << ','
-          << p.fpfh.translation_error_res << ',' << p.fpfh.time_ms << ',' << p.hypotheses_tried << '\n';
+          << p.fpfh.translation_error_res << ',' << p.fpfh.time_ms << ',' << p.hypotheses_tried << ','
+          << p.truth.fine_correspondences << ',' << p.truth.required_correspondences << ',' << p.truth.icp_abandoned << '\n';
     }
     out.flush ();
   }
@@ -404,6 +406,7 @@ namespace
     pcl::console::parse_argument (argc, argv, "--fine-dimension-tolerance", v.fine_dimension_tolerance);
     pcl::console::parse_argument (argc, argv, "--fine-dimension-fraction", v.fine_dimension_fraction);
     pcl::console::parse_argument (argc, argv, "--coarse-dimension-fraction", v.coarse_dimension_fraction);
+    pcl::console::parse_argument (argc, argv, "--correspondence-fraction", v.correspondence_fraction);
     pcl::console::parse_argument (argc, argv, "--empty-space-margin", v.empty_space_margin);
     pcl::console::parse_argument (argc, argv, "--checked-dimensions", v.checked_dimensions);
     pcl::console::parse_argument (argc, argv, "--rival-margin", o.params.rival_margin);
@@ -436,7 +439,7 @@ main (int argc, char** argv)
                  "model_seen,scene_seen,model_matched,scene_matched,"
                  "truth_free_space_2,truth_free_space_4,truth_free_space_8,free_space_2,free_space_4,free_space_8,"
                  "fpfh_registered,fpfh_correct,fpfh_rotation_error_deg,fpfh_translation_error_res,fpfh_time_ms,"
-                 "hypotheses_tried\n";
+                 "hypotheses_tried,truth_fine_correspondences,truth_required_correspondences,truth_icp_abandoned\n";
     summary_csv << summaryHeader () << '\n';
     std::printf ("%s\n", summaryHeader ().c_str ());
     for (const auto& [name, load] : objectSets (o))
