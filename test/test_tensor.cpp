@@ -68,14 +68,22 @@ namespace
     return f;
   }
 
-  Tensors
-  compute (const pcl::ScanMesh& mesh, int grid_size, bool region_growing)
+  /** An estimation of \a mesh's tensors with D of the example object. */
+  Estimation
+  exampleEstimation (const pcl::ScanMesh& mesh)
   {
     Estimation est;
     est.setInputCloud (mesh.cloud);
     est.setInputNormals (mesh.cloud);
     est.setPolygons (mesh.polygons);
     est.setObjectDimensions (exampleDimensions ());
+    return est;
+  }
+
+  Tensors
+  compute (const pcl::ScanMesh& mesh, int grid_size, bool region_growing)
+  {
+    Estimation est = exampleEstimation (mesh);
     est.setGridSize (grid_size);
     est.setRegionGrowing (region_growing);
     Tensors out;
@@ -528,15 +536,7 @@ TEST (TensorEstimation, PairsObeyTheConstraints)
 TEST (TensorEstimation, BadInputGivesClearErrors)
 {
   const pcl::ScanMesh mesh = coarseExampleObject ();
-  auto configured = [&mesh] ()
-  {
-    Estimation est;
-    est.setInputCloud (mesh.cloud);
-    est.setInputNormals (mesh.cloud);
-    est.setPolygons (mesh.polygons);
-    est.setObjectDimensions (exampleDimensions ());
-    return est;
-  };
+  auto configured = [&mesh] () { return exampleEstimation (mesh); };
   Tensors out;
 
   {  // A mesh without polygons.
@@ -742,11 +742,7 @@ namespace
   void
   expectSameAsNew (Estimation& est, const pcl::ScanMesh& mesh, double d_max)
   {
-    Estimation fresh;
-    fresh.setInputCloud (mesh.cloud);
-    fresh.setInputNormals (mesh.cloud);
-    fresh.setPolygons (mesh.polygons);
-    fresh.setObjectDimensions (exampleDimensions ());
+    Estimation fresh = exampleEstimation (mesh);
     fresh.setDistanceLimits (exampleDimensions ().dMin (), d_max);
     const Tensors expected = computeBatch (fresh, 2, 0);
     const Tensors got = computeBatch (est, 2, 0);
@@ -768,11 +764,7 @@ TEST (TensorEstimation, OneEstimationForEveryBatchRedoesWhatChanged)
   // changed cloud (in place, same pointer), setting or mesh must still give what a new one gives.
   pcl::ScanMesh mesh = coarseExampleObject ();
   const double d_max = exampleDimensions ().dMax ();
-  Estimation est;
-  est.setInputCloud (mesh.cloud);
-  est.setInputNormals (mesh.cloud);
-  est.setPolygons (mesh.polygons);
-  est.setObjectDimensions (exampleDimensions ());
+  Estimation est = exampleEstimation (mesh);
   const Tensors first = computeBatch (est, 2, 1);
   expectSameAsNew (est, mesh, d_max);
   EXPECT_EQ (computeBatch (est, 2, 1).size (), first.size ());
@@ -799,11 +791,7 @@ TEST (TensorEstimation, PairBatchesPartitionTheTensors)
   std::size_t total = 0;
   for (int batch = 0; batch < 3; ++batch)
   {
-    Estimation est;
-    est.setInputCloud (mesh.cloud);
-    est.setInputNormals (mesh.cloud);
-    est.setPolygons (mesh.polygons);
-    est.setObjectDimensions (exampleDimensions ());
+    Estimation est = exampleEstimation (mesh);
     est.setPairBatch (3, batch);
     Tensors part;
     est.computeOrThrow (part);

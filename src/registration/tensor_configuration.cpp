@@ -91,12 +91,10 @@ namespace pcl
     }
 
     pcl::PointCloud<pcl::TensorDescriptor>::Ptr
-    computeViewTensors (const PreparedScan& scan, const ObjectDimensions& dims, const TensorRegistrationParams& params,
-                        int batches, int batch)
+    computeViewTensors (const PreparedScan& scan, const ObjectDimensions& dims, const TensorRegistrationParams& params)
     {
       detail::ViewTensorEstimation estimation;
       detail::configureViewEstimation (estimation, scan, dims, params);
-      estimation.setPairBatch (batches, batch);
       pcl::PointCloud<pcl::TensorDescriptor>::Ptr tensors (new pcl::PointCloud<pcl::TensorDescriptor>);
       estimation.computeOrThrow (*tensors);
       return tensors;

@@ -161,7 +161,7 @@ namespace pcl
         * order, every \a batches-th, starting at \a batch. The batches of one view partition its
         * tensors, spread evenly over the view. Fig. 7 computes the scene's tensors one at a time and
         * stops once one match verifies; a caller can do the same a batch at a time
-        * (registerTensorViewsInBatches). Default: one batch, every pair. One estimation computing
+        * (TensorRegistration does). Default: one batch, every pair. One estimation computing
         * the batches in turn meshes the surface and forms the pairs once: each compute() checks that
         * the input, the triangles and the settings are those of the last and redoes what changed.
         * \throw pcl::BadArgumentException unless 0 <= batch < batches */

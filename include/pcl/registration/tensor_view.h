@@ -60,13 +60,12 @@ namespace pcl
     prepareTensorView (const pcl::PointCloud<pcl::PointXYZ>& cloud, const ScanViewpoint& viewpoint,
                        const ScanPreparationParams& params);
 
-    /** \brief The tensors of one prepared view (Section 2), with Eq. 2 and Eq. 3 taken from \a dims;
-      * with \a batches > 1, only batch \a batch of its vertex pairs (TensorEstimation::setPairBatch).
+    /** \brief The tensors of one prepared view (Section 2), with Eq. 2 and Eq. 3 taken from \a dims.
+      * (To compute them in batches, keep one TensorEstimation and call setPairBatch: it forms the pairs once.)
       * \throw pcl::BadArgumentException or pcl::InvalidScanException on unusable input
       */
     pcl::PointCloud<pcl::TensorDescriptor>::Ptr
-    computeViewTensors (const PreparedScan& scan, const ObjectDimensions& dims, const TensorRegistrationParams& params,
-                        int batches = 1, int batch = 0);
+    computeViewTensors (const PreparedScan& scan, const ObjectDimensions& dims, const TensorRegistrationParams& params);
 
     /** \brief \a view with its tensors computed with \a dims (a copy: the meshes are shared). */
     TensorView::Ptr

@@ -178,7 +178,7 @@ pcl::TensorEstimation<PointInT, PointNT, PointOutT>::initCompute ()
   const bool same_surface = same_vertices && samePolygons (polygons_, mesh_polygons_);
   if (!same_vertices && !tree_rebuilt)
     this->tree_->setInputCloud (this->surface_);
-  if (!same_surface || unit_normals != normals_unit_ || *this->indices_ != pairs_indices_ || pairSettings () != pairs_settings_)
+  if (!same_vertices || unit_normals != normals_unit_ || *this->indices_ != pairs_indices_ || pairSettings () != pairs_settings_)
     pairs_formed_ = false;
   vertices_.swap (vertices);
   normals_unit_.swap (unit_normals);
