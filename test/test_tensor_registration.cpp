@@ -367,6 +367,45 @@ TEST (TensorRegistration, RivalOverTheOtherSensorsBackgroundIsDismissed)
   EXPECT_TRUE (doubted.ambiguous);
 }
 
+// Example view 1 with a patch of its surface lifted 15 d_res toward its sensor, as if something had stood
+// in front of the object in that scan only. At the true pose the patch floats where view 0's sensor saw
+// empty space: the free-space check refuses the truth and every hypothesis that ICP takes there. The pair
+// is not registered, and a close repeat of a hypothesis refused there is skipped, not verified again.
+TEST (TensorRegistration, PoseThatFreeSpaceRefusedIsNotTriedAgain)
+{
+  const auto& views = exampleViews ();
+  pcl::SyntheticView lifted = views[1];
+  lifted.view.cloud.reset (new pcl::PointCloud<pcl::PointXYZ> (*views[1].view.cloud));
+  const float lift = static_cast<float> (15.0 * views[1].resolution);
+  const auto& cloud = *lifted.view.cloud;
+  std::size_t moved = 0;
+  for (std::uint32_t row = cloud.height * 2 / 5; row < cloud.height * 3 / 5; ++row)
+    for (std::uint32_t col = cloud.width * 2 / 5; col < cloud.width * 3 / 5; ++col)
+    {
+      auto p = lifted.view.cloud->at (col, row).getVector3fMap ();
+      if (std::isfinite (p.x ()))
+      {
+        p *= 1.0f - lift / p.norm ();  // along its line of sight, from the sensor at the origin
+        ++moved;
+      }
+    }
+  ASSERT_GT (moved, 1000u);
+
+  pcl::registration::TensorRegistrationParams params;
+  params.max_hypotheses = 60;
+  TensorRegistration registration;
+  registration.setParams (params);
+  const auto& report = registerViews (registration, views[0], lifted);
+  EXPECT_FALSE (report.registered) << "a pose with a surface in the other sensor's free space was reported";
+  EXPECT_GT (report.failures[static_cast<std::size_t> (pcl::registration::TensorVerificationStage::FREE_SPACE)], 0u);
+  // Most hypotheses lead to the truth, so repeats are many (27 skipped for 60 tried; 1 when only the
+  // fine checks' refusals are remembered).
+  EXPECT_GT (report.hypotheses_skipped, report.hypotheses_tried / 4);
+  std::cout << report.hypotheses_tried << " tried, " << report.hypotheses_skipped << " skipped, "
+            << report.failures[static_cast<std::size_t> (pcl::registration::TensorVerificationStage::FREE_SPACE)]
+            << " refused by free space" << std::endl;
+}
+
 // The shared teapot's opposite views 3 and 9 (30 degree ring, overlap 0): its body, a surface of
 // revolution, fits onto itself turned, and the most compact of those turns fits the two views into D
 // (Eq. 1, from the pair). Its neighbours along the body fail D alone, by less than a round object's

@@ -135,6 +135,7 @@ namespace pcl
               configureVerifier (verification_, model_with_tensors, scene_tensors, scene, dims, params);
               report.resolution = verification_.getResolution ();
               refuted_ = RefutedHypotheses (params.repeat_rotation, params.repeat_translation * report.resolution);
+              refuted_answers_ = refuted_;
               verification_.setIcpStageCheck ([this] (std::size_t stage, const Eigen::Matrix4f& pose) {
                 return stage >= icp_dead_ends_.size () || !icp_dead_ends_[stage].contains (pose);
               });
@@ -285,6 +286,8 @@ namespace pcl
                   refuted_.add (hypothesis);
                 if (result.stage == TensorVerificationStage::FINE_OVERLAP && !result.icp_abandoned)
                   addDeadEnds (result.icp_stage_transforms);
+                if (result.stage == TensorVerificationStage::FREE_SPACE)
+                  refuted_answers_.add (hypothesis);
                 return false;
               }
               if (accept_ && !accept_ (result))
@@ -422,7 +425,7 @@ namespace pcl
                   return true;
                 const TensorMatch& match = matches[k];
                 const Eigen::Matrix4f hypothesis = transformFromTensorMatch (match, *model_tensors_, *batch);
-                if (refuted_.contains (hypothesis))
+                if (refuted_.contains (hypothesis) || refuted_answers_.contains (hypothesis))
                 {
                   ++report_.hypotheses_skipped;
                   continue;
@@ -454,6 +457,9 @@ namespace pcl
             const HypothesisAcceptor& accept_;
             CorrespondenceRejectorTensorVerification verification_;
             RefutedHypotheses refuted_{0.0, 0.0};
+            /** Refused by the free-space check: a close repeat is no answer either, but may still doubt
+              * one as a rival (rivalPasses()), so findRival() does not skip it. */
+            RefutedHypotheses refuted_answers_{0.0, 0.0};
             std::vector<RefutedHypotheses> icp_dead_ends_;  ///< per ICP stage (addDeadEnds())
             Eigen::Vector4f scene_centroid_;  ///< where poses are compared (homogeneous)
             double far_distance_;             ///< mean(D) / 2: a pose moving the centroid farther is another pose

@@ -27,7 +27,8 @@ namespace pcl
       *
       * Each correspondence (scene tensor -> model tensor) gives one rigid hypothesis (Eq. 7-8). It
       * survives only if, in turn: the registered reduced meshes exceed the object's dimensions D by
-      * at most t_D (Eq. 9); at least n_c = min(|M_m|, |M_s|)/4 scene points lie within
+      * at most t_D (Eq. 9); at least n_c = min(|M_m|, |M_s|)/5 (the paper's 1/4:
+      * doc/design.md#correspondence-count) scene points lie within
       * TensorVerificationParams::coarse_distance of the model (default 6 d_res, the paper's 2:
       * doc/design.md#coarse-correspondence-distance; with count_both_views, n_c/2 of each view); after
       * point-to-plane ICP, at least 2 n_c lie within d_res (n_c of each view); the registered fine
