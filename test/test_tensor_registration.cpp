@@ -377,12 +377,12 @@ TEST (TensorRegistration, PoseThatFreeSpaceRefusedIsNotTriedAgain)
   pcl::SyntheticView lifted = views[1];
   lifted.view.cloud.reset (new pcl::PointCloud<pcl::PointXYZ> (*views[1].view.cloud));
   const float lift = static_cast<float> (15.0 * views[1].resolution);
-  const auto& cloud = *lifted.view.cloud;
+  auto& cloud = *lifted.view.cloud;
   std::size_t moved = 0;
   for (std::uint32_t row = cloud.height * 2 / 5; row < cloud.height * 3 / 5; ++row)
     for (std::uint32_t col = cloud.width * 2 / 5; col < cloud.width * 3 / 5; ++col)
     {
-      auto p = lifted.view.cloud->at (col, row).getVector3fMap ();
+      auto p = cloud.at (col, row).getVector3fMap ();
       if (std::isfinite (p.x ()))
       {
         p *= 1.0f - lift / p.norm ();  // along its line of sight, from the sensor at the origin
@@ -396,14 +396,14 @@ TEST (TensorRegistration, PoseThatFreeSpaceRefusedIsNotTriedAgain)
   TensorRegistration registration;
   registration.setParams (params);
   const auto& report = registerViews (registration, views[0], lifted);
+  const std::size_t free_space = report.failures[static_cast<std::size_t> (pcl::registration::TensorVerificationStage::FREE_SPACE)];
+  std::cout << report.hypotheses_tried << " tried, " << report.hypotheses_skipped << " skipped, " << free_space
+            << " refused by free space" << std::endl;
   EXPECT_FALSE (report.registered) << "a pose with a surface in the other sensor's free space was reported";
-  EXPECT_GT (report.failures[static_cast<std::size_t> (pcl::registration::TensorVerificationStage::FREE_SPACE)], 0u);
+  EXPECT_GT (free_space, 0u);
   // Most hypotheses lead to the truth, so repeats are many (27 skipped for 60 tried; 1 when only the
   // fine checks' refusals are remembered).
   EXPECT_GT (report.hypotheses_skipped, report.hypotheses_tried / 4);
-  std::cout << report.hypotheses_tried << " tried, " << report.hypotheses_skipped << " skipped, "
-            << report.failures[static_cast<std::size_t> (pcl::registration::TensorVerificationStage::FREE_SPACE)]
-            << " refused by free space" << std::endl;
 }
 
 // The shared teapot's opposite views 3 and 9 (30 degree ring, overlap 0): its body, a surface of
