@@ -50,6 +50,8 @@ namespace
     print_info ("  --dims-fraction F  fine dimension check: allowed excess over D as a fraction of mean(D), at least\n"
                 "                     2 d_res (0: the paper's 2 d_res alone; default %g)\n", d.verification.fine_dimension_fraction);
     print_info ("  --nc F             n_c as a fraction of the smaller view (default %g)\n", d.verification.correspondence_fraction);
+    print_info ("  --icp-normal-angle A  ICP pairs points whose normals differ by at most A degrees (180: all;\n"
+                "                     default %g)\n", d.verification.icp_max_normal_angle);
     print_info ("  --count both|scene views whose correspondences verification counts (default %s)\n",
                 d.verification.count_both_views ? "both" : "scene");
     print_info ("  --dims X,Y,Z       object dimensions D (default: from the two views, Eq. 1)\n");
@@ -71,6 +73,7 @@ namespace
     parse_argument (argc, argv, "--max-hypotheses", p.max_hypotheses);
     parse_argument (argc, argv, "--scene-batches", p.scene_tensor_batches);
     parse_argument (argc, argv, "--nc", p.verification.correspondence_fraction);
+    parse_argument (argc, argv, "--icp-normal-angle", p.verification.icp_max_normal_angle);
     parse_argument (argc, argv, "--ambiguity-checks", p.ambiguity_checks);
     p.probe_rivals = !find_switch (argc, argv, "--no-rival-probe");
     parse_argument (argc, argv, "--dims-fraction", p.verification.fine_dimension_fraction);

@@ -108,6 +108,9 @@ namespace
                  "                     from its surface (0: every rival doubts; default %g)\n"
                  "  --rival-dimension-factor F  a rival refused by D alone is judged with F times the dimension\n"
                  "                     tolerances (1: as answers are; default %g)\n"
+                 "  --icp-normal-angle A  ICP pairs points whose normals differ by at most A degrees (180: all;\n"
+                 "                     default %g) ...\n"
+                 "  --rival-icp-normal-angle A  ... and the rivals' ICP by at most A (default %g)\n"
                  "  --tr T, --tc T     tensor matching thresholds t_r and t_c, Eq. 5 and 6 (default %g, %g)\n"
                  "  --fallback T       second round of matches over T for t_r and t_c (default %g; t_r, t_c or more: none)\n"
                  "  --order O          order of hypotheses: best or scene (default %s)\n"
@@ -120,6 +123,7 @@ namespace
                  d.params.verification.coarse_dimension_fraction, d.params.verification.correspondence_fraction,
                  d.params.verification.empty_space_margin, d.params.verification.checked_dimensions, d.params.rival_margin,
                  d.params.rival_empty_space_margin, d.params.rival_dimension_factor,
+                 d.params.verification.icp_max_normal_angle, d.params.rival_icp_max_normal_angle,
                  d.params.overlap_threshold, d.params.correlation_threshold, d.params.fallback_overlap_threshold,
                  pcl::registration::tensorMatchOrderName (d.params.order), d.out.c_str (), d.data.c_str ());
   }
@@ -412,6 +416,8 @@ namespace
     pcl::console::parse_argument (argc, argv, "--rival-margin", o.params.rival_margin);
     pcl::console::parse_argument (argc, argv, "--rival-empty-space-margin", o.params.rival_empty_space_margin);
     pcl::console::parse_argument (argc, argv, "--rival-dimension-factor", o.params.rival_dimension_factor);
+    pcl::console::parse_argument (argc, argv, "--icp-normal-angle", v.icp_max_normal_angle);
+    pcl::console::parse_argument (argc, argv, "--rival-icp-normal-angle", o.params.rival_icp_max_normal_angle);
     pcl::console::parse_argument (argc, argv, "--tr", o.params.overlap_threshold);
     pcl::console::parse_argument (argc, argv, "--tc", o.params.correlation_threshold);
     if (pcl::console::parse_argument (argc, argv, "--fallback", o.params.fallback_overlap_threshold) >= 0)

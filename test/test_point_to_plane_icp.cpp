@@ -115,6 +115,59 @@ TEST (PointToPlaneIcp, BadParametersAreRefused)
   params.coarse_stage_tolerance = 1.0;
   params.coarse_stage_step = 0;
   EXPECT_THROW (pcl::registration::pointToPlaneIcp (target, target, search, Eigen::Matrix4f::Identity (), params), pcl::BadArgumentException);
+  params.coarse_stage_step = 1;
+  params.max_normal_angle = 3.2;
+  EXPECT_THROW (pcl::registration::pointToPlaneIcp (target, target, search, Eigen::Matrix4f::Identity (), params), pcl::BadArgumentException);
+  params.max_normal_angle = -0.1;
+  EXPECT_THROW (pcl::registration::pointToPlaneIcp (target, target, search, Eigen::Matrix4f::Identity (), params), pcl::BadArgumentException);
+}
+
+TEST (PointToPlaneIcp, PairsWhoseNormalsDisagreeAreNotUsed)
+{
+  const auto target = wavySurface ();
+  pcl::BoundedNearestSearch search (2e-3f);
+  search.setInputCloud (target);
+  // The source is the target itself, every third point's normal turned by 90 degrees about x.
+  auto source = target;
+  std::size_t turned = 0;
+  for (std::size_t k = 0; k < source.size (); k += 3, ++turned)
+    source[k].getNormalVector3fMap () = Eigen::AngleAxisf (0.5f * static_cast<float> (M_PI), Eigen::Vector3f::UnitX ()) *
+                                        source[k].getNormalVector3fMap ();
+  pcl::registration::PointToPlaneIcpParams params;
+  params.max_distance = 1e-3;
+  const auto all = pcl::registration::pointToPlaneIcp (source, target, search, Eigen::Matrix4f::Identity (), params);
+  EXPECT_EQ (all.pairs, source.size ());
+  params.max_normal_angle = 60.0 * M_PI / 180.0;
+  const auto compatible = pcl::registration::pointToPlaneIcp (source, target, search, Eigen::Matrix4f::Identity (), params);
+  EXPECT_EQ (compatible.pairs, source.size () - turned);
+  expectTruthRecovered (compatible.transform, Eigen::Affine3d::Identity ());
+}
+
+// A plate 3 mm thick, its two faces the wavy surface with opposite normals, and a sample of the top
+// face 1.2 mm below it: the near-bottom points pair with the bottom face, whose planes pull the pose
+// off (4.6 degrees and 5.8 mm). Compatible normals pair the top face only, and recover the truth.
+TEST (PointToPlaneIcp, CompatibleNormalsKeepAThinPlatesFacesApart)
+{
+  const auto top = wavySurface ();
+  auto plate = top;
+  for (auto p : top)
+  {
+    p.z -= 3e-3f;
+    p.getNormalVector3fMap () = -p.getNormalVector3fMap ();
+    plate.push_back (p);
+  }
+  pcl::BoundedNearestSearch search (2e-3f);
+  search.setInputCloud (plate);
+  const Eigen::Affine3d truth = Eigen::Translation3d (0.0, 0.0, 1.2e-3) * Eigen::AngleAxisd (2.0 * M_PI / 180.0, Eigen::Vector3d::UnitX ());
+  const auto source = movedSample (top, truth, 5);
+  auto params = stagedParams ();
+  const auto all = pcl::registration::pointToPlaneIcp (source, plate, search, Eigen::Matrix4f::Identity (), params);
+  const auto e = pcl::registrationError (Eigen::Affine3d (all.transform.cast<double> ()), truth, 1e-3);
+  std::cout << "every pair: " << e.rotation_deg << " deg, " << e.translation_resolutions << " mm off" << std::endl;
+  EXPECT_GT (e.rotation_deg, 1.0) << "the case this test guards has changed";
+  params.max_normal_angle = 60.0 * M_PI / 180.0;
+  const auto compatible = pcl::registration::pointToPlaneIcp (source, plate, search, Eigen::Matrix4f::Identity (), params);
+  expectTruthRecovered (compatible.transform, truth);
 }
 
 TEST (PointToPlaneIcp, LooseCoarseStagesReachTheSamePoseInFewerIterations)

@@ -74,17 +74,17 @@ namespace pcl
         * this when verification changes its verdicts (2: the free-space check's occlusion and noise rules;
         * 3: rival turns along the screw of the least constrained motion; 4: a rival probe's ICP ends where
         * a stage is short of pairs; 5: rivals that only the other sensor's background speaks against are dismissed;
-        * 6: rivals are held to D more loosely). */
-      constexpr int kVerificationRevision = 6;
+        * 6: rivals are held to D more loosely; 7: ICP pairs compatible normals only). */
+      constexpr int kVerificationRevision = 7;
     }
 
     TensorViewCacheKey
     pairCacheKey (const TensorViewCacheKey& model, const TensorViewCacheKey& scene, const ObjectDimensions& dims,
                   const pcl::registration::TensorRegistrationParams& params)
     {
-      static_assert (sizeof (pcl::registration::TensorVerificationParams) == 112,
+      static_assert (sizeof (pcl::registration::TensorVerificationParams) == 128,
                      "a field was added to TensorVerificationParams: add it to pairCacheKey () too");
-      static_assert (sizeof (pcl::registration::TensorRegistrationParams) == 320,
+      static_assert (sizeof (pcl::registration::TensorRegistrationParams) == 344,
                      "a field was added to TensorRegistrationParams: add it to pairCacheKey () too");
       TensorViewCacheKey key;
       key.source = taggedHash ("pair").add (model.source).add (model.preparation).add (scene.source).add (scene.preparation).digest ();
@@ -97,10 +97,11 @@ namespace pcl
           .add (params.scene_tensor_batches).add (params.batch_hypotheses)
           .add (params.max_hypotheses).add (params.repeat_rotation).add (params.repeat_translation)
           .add (params.ambiguity_checks).add (params.ambiguity_rotation).add (params.probe_rivals).add (params.rival_margin)
-          .add (params.rival_empty_space_margin).add (params.rival_empty_space_fraction).add (params.rival_dimension_factor);
+          .add (params.rival_empty_space_margin).add (params.rival_empty_space_fraction).add (params.rival_dimension_factor)
+          .add (params.rival_icp_max_normal_angle);
       hash.add (v.coarse_dimension_fraction).add (v.correspondence_fraction).add (v.coarse_distance).add (v.count_both_views)
           .add (v.fine_distance).add (v.fine_dimension_tolerance).add (v.fine_dimension_fraction).add (v.checked_dimensions).add (v.icp_iterations)
-          .add (v.icp_max_distance).add (v.icp_final_distance).add (v.icp_coarse_stage_step).add (v.sample_points)
+          .add (v.icp_max_distance).add (v.icp_final_distance).add (v.icp_coarse_stage_step).add (v.icp_max_normal_angle).add (v.sample_points)
           .add (v.free_space_distance).add (v.free_space_fraction).add (v.empty_space_margin);
       key.preparation = hash.digest ();
       return key;

@@ -73,11 +73,13 @@ namespace pcl
       if (!positive (p.free_space_distance) || !(p.free_space_fraction >= 0.0 && p.free_space_fraction <= 1.0))
         PCL_TENSOR_THROW (BadArgumentException, "verification: free-space distance must be positive and its fraction in [0, 1], got "
                           << p.free_space_distance << " and " << p.free_space_fraction);
-      if (p.checked_dimensions < 1 || p.checked_dimensions > 3 || p.icp_iterations < 0 || p.sample_points < 1 || p.icp_coarse_stage_step < 1)
-        PCL_TENSOR_THROW (BadArgumentException, "verification: checked dimensions must be 1..3, ICP iterations >= 0, sample points >= 1 "
-                          "and the ICP coarse-stage step >= 1");
+      if (p.checked_dimensions < 1 || p.checked_dimensions > 3 || p.icp_iterations < 0 || p.sample_points < 1 || p.icp_coarse_stage_step < 1
+          || !(p.icp_max_normal_angle >= 0.0 && p.icp_max_normal_angle <= 180.0))
+        PCL_TENSOR_THROW (BadArgumentException, "verification: checked dimensions must be 1..3, ICP iterations >= 0, sample points >= 1, "
+                          "the ICP coarse-stage step >= 1 and the ICP normal angle in [0, 180]");
+      // Only the samples and the views' projections depend on the parameters: else what prepare() built stays.
+      prepared_ = prepared_ && p.sample_points == params_.sample_points && p.empty_space_margin == params_.empty_space_margin;
       params_ = params;
-      prepared_ = false;
     }
 
     namespace
@@ -157,6 +159,10 @@ namespace pcl
       scene_search_ = pcl::BoundedNearestSearch (cell);
       scene_search_.setInputCloud (*scene_->fine.cloud);
       model_sample_ = evenSample (*model_->fine.cloud, params_.sample_points);
+      model_fine_extents_ = ViewExtents (*model_->fine.cloud);
+      scene_fine_extents_ = ViewExtents (*scene_->fine.cloud);
+      model_reduced_extents_ = ViewExtents (*model_->reduced.cloud);
+      scene_reduced_extents_ = ViewExtents (*scene_->reduced.cloud);
       prepared_ = true;
     }
 
@@ -265,11 +271,14 @@ namespace pcl
         * past any margin; a misplaced surface puts whole patches there. */
       double
       violationFraction (const pcl::PointCloud<pcl::PointNormal>& from, const pcl::BoundedNearestSearch& from_search,
-                         const Eigen::Matrix4f& t, const RangeViewProjection& to, double margin)
+                         const Eigen::Matrix4f& t, const RangeViewProjection& to, double margin, double stop_above)
       {
         constexpr std::size_t kSamples = 4000;
         constexpr std::size_t kMinSeen = 50;  // fewer: too little seen by both to judge
         const std::size_t step = std::max<std::size_t> (1, from.size () / kSamples);
+        // Once violations outnumber stop_above of all samples (and kMinSeen), the fraction of those seen exceeds it.
+        const double samples = static_cast<double> ((from.size () + step - 1) / step);
+        const double stop = std::max (stop_above * samples, static_cast<double> (kMinSeen));
         std::size_t seen = 0, violating = 0;
         for (std::size_t i = 0; i < from.size (); i += step)
         {
@@ -278,6 +287,8 @@ namespace pcl
             continue;
           ++seen;
           violating += f == FreeSpace::VIOLATING && coherentViolation (from, i, from_search, t, to, margin) ? 1 : 0;
+          if (static_cast<double> (violating) > stop)
+            return static_cast<double> (violating) / samples;
         }
         return seen < kMinSeen ? 0.0 : static_cast<double> (violating) / static_cast<double> (seen);
       }
@@ -339,24 +350,19 @@ namespace pcl
 
     double
     CorrespondenceRejectorTensorVerification::violation (const Eigen::Matrix4f& t, double margin, const RangeViewProjection& model_view,
-                                                         const RangeViewProjection& scene_view) const
+                                                         const RangeViewProjection& scene_view, double stop_above) const
     {
-      return std::max (violationFraction (*scene_->fine.cloud, scene_search_, t, model_view, margin),
-                       violationFraction (*model_->fine.cloud, model_search_, inverseRigid (t), scene_view, margin));
+      const double scene = violationFraction (*scene_->fine.cloud, scene_search_, t, model_view, margin, stop_above);
+      if (scene > stop_above)
+        return scene;
+      return std::max (scene, violationFraction (*model_->fine.cloud, model_search_, inverseRigid (t), scene_view, margin, stop_above));
     }
 
     double
-    CorrespondenceRejectorTensorVerification::dimensionExcess (const PointCloudN& model, const PointCloudN& scene,
+    CorrespondenceRejectorTensorVerification::dimensionExcess (const ViewExtents& model, const ViewExtents& scene,
                                                                const Eigen::Matrix4f& t) const
     {
-      std::vector<Eigen::Vector3d> points;
-      points.reserve (model.size () + scene.size ());
-      for (const auto& p : model)
-        points.push_back (p.getVector3fMap ().cast<double> ());
-      const Eigen::Matrix4d td = t.cast<double> ();
-      for (const auto& p : scene)
-        points.push_back ((td * p.getVector4fMap ().cast<double> ()).head<3> ());
-      return registeredDimensionExcess (points, {0, model.size ()}, dims_, params_.checked_dimensions);
+      return registeredDimensionExcess (model, scene, t.cast<double> (), dims_, params_.checked_dimensions);
     }
 
     PointToPlaneIcpResult
@@ -370,6 +376,7 @@ namespace pcl
       icp.final_distance = params_.icp_final_distance * d_res;
       icp.min_translation = 1e-3 * d_res;
       icp.coarse_stage_step = params_.icp_coarse_stage_step;
+      icp.max_normal_angle = params_.icp_max_normal_angle * M_PI / 180.0;  // pcl::deg2rad (180) exceeds M_PI
       icp.min_pairs = min_pairs;
       if (check_stages)
         icp.continue_after_stage = icp_stage_check_;
@@ -396,7 +403,7 @@ namespace pcl
       const double d_res = getResolution ();
 
       // Steps 4-6: the reduced meshes, coarsely registered, must fit the object (Eq. 9, t_D).
-      result.coarse_dimension_excess = dimensionExcess (*model_->reduced.cloud, *scene_->reduced.cloud, start);
+      result.coarse_dimension_excess = dimensionExcess (model_reduced_extents_, scene_reduced_extents_, start);
       if (result.coarse_dimension_excess > dimension_factor * params_.coarse_dimension_fraction * dims_.mean ())
       {
         result.stage = TensorVerificationStage::COARSE_DIMENSIONS;
@@ -447,7 +454,7 @@ namespace pcl
       }
 
       // Steps 13-14: the registered fine meshes must fit the object (Eq. 9), within 2 d_res or a tenth of D.
-      result.fine_dimension_excess = dimensionExcess (*model_->fine.cloud, *scene_->fine.cloud, result.transform) / d_res;
+      result.fine_dimension_excess = dimensionExcess (model_fine_extents_, scene_fine_extents_, result.transform) / d_res;
       if (result.fine_dimension_excess >
           dimension_factor * std::max (params_.fine_dimension_tolerance, params_.fine_dimension_fraction * dims_.mean () / d_res))
       {
@@ -456,7 +463,9 @@ namespace pcl
       }
 
       // Beyond the paper: neither view may put surface where the other's sensor saw through.
-      result.free_space_violation = freeSpaceViolation (result.transform, getFreeSpaceMargin ());
+      projectViews ();
+      result.free_space_violation = violation (result.transform, getFreeSpaceMargin (), *model_view_, *scene_view_,
+                                               kFreeSpaceMeasuredFactor * params_.free_space_fraction);
       if (result.free_space_violation > params_.free_space_fraction)
       {
         result.stage = TensorVerificationStage::FREE_SPACE;

@@ -29,7 +29,7 @@ namespace pcl
       Step
       solveStep (const pcl::PointCloud<pcl::PointNormal>& source, std::size_t stride, const pcl::PointCloud<pcl::PointNormal>& target,
                  const pcl::BoundedNearestSearch& search, const Eigen::Matrix4f& t, double max_distance,
-                 std::vector<std::int32_t>& hints)
+                 double min_normal_cosine, std::vector<std::int32_t>& hints)
       {
         Eigen::Matrix<double, 6, 6> a = Eigen::Matrix<double, 6, 6>::Zero ();
         Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero ();
@@ -48,6 +48,9 @@ namespace pcl
           const Eigen::Vector3d n = m.getNormalVector3fMap ().cast<double> ();
           if (!n.allFinite () || n.squaredNorm () == 0.0)
             continue;  // no tangent plane: a vertex on no face, or a cloud without normals
+          const Eigen::Vector3f ns = t.topLeftCorner<3, 3> () * p.getNormalVector3fMap ();
+          if (ns.allFinite () && ns.squaredNorm () > 0.0f && ns.cast<double> ().dot (n) < min_normal_cosine * ns.norm () * n.norm ())
+            continue;  // another face of the target: its plane would pull the pose off
           const Eigen::Vector3d s = q.cast<double> ();
           const double r = (s - m.getVector3fMap ().cast<double> ()).dot (n);
           Eigen::Matrix<double, 6, 1> j;
@@ -82,7 +85,8 @@ namespace pcl
         const std::size_t sampled = (source.size () + stride - 1) / stride;
         for (int it = 0; it < params.max_iterations; ++it)
         {
-          const Step step = solveStep (source, stride, target, search, result.transform, max_distance, hints);
+          const Step step = solveStep (source, stride, target, search, result.transform, max_distance,
+                                       std::cos (params.max_normal_angle), hints);
           result.pairs = sampled ? step.pairs * source.size () / sampled : 0;
           result.rms = step.rms;
           if (!step.solved)
@@ -107,10 +111,11 @@ namespace pcl
                      const PointToPlaneIcpParams& params)
     {
       if (!(params.max_distance > 0.0) || params.max_iterations < 0 || !(params.final_distance >= 0.0)
-          || !(params.coarse_stage_tolerance >= 1.0) || !std::isfinite (params.coarse_stage_tolerance) || params.coarse_stage_step < 1)
+          || !(params.coarse_stage_tolerance >= 1.0) || !std::isfinite (params.coarse_stage_tolerance) || params.coarse_stage_step < 1
+          || !(params.max_normal_angle >= 0.0 && params.max_normal_angle <= M_PI))
         PCL_TENSOR_THROW (BadArgumentException, "ICP needs a positive pairing distance, a non-negative final distance, "
-                          "a non-negative iteration count, a finite coarse-stage tolerance of at least 1 and a "
-                          "coarse-stage step of at least 1");
+                          "a non-negative iteration count, a finite coarse-stage tolerance of at least 1, a "
+                          "coarse-stage step of at least 1 and a normal angle in [0, pi]");
       PointToPlaneIcpResult result;
       result.transform = initial;
       // The pairing distances of the stages, halving from max_distance down to final_distance.

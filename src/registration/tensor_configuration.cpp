@@ -88,6 +88,9 @@ namespace pcl
       if (!(params.rival_dimension_factor >= 1.0) || !std::isfinite (params.rival_dimension_factor))
         PCL_TENSOR_THROW (BadArgumentException, "the rival's dimension factor must be finite and at least 1, got "
                           << params.rival_dimension_factor);
+      if (!(params.rival_icp_max_normal_angle >= 0.0 && params.rival_icp_max_normal_angle <= 180.0))
+        PCL_TENSOR_THROW (BadArgumentException, "the rivals' ICP normal angle must be in [0, 180] degrees, got "
+                          << params.rival_icp_max_normal_angle);
     }
 
     pcl::PointCloud<pcl::TensorDescriptor>::Ptr

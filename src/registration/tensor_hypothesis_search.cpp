@@ -50,12 +50,17 @@ namespace pcl
           * away (doc/design.md#rival-probe). */
         const std::vector<double> kRivalSteps{0.35, 0.8};
         const std::vector<double> kRivalTurns{0.5 * M_PI, 0.75 * M_PI, M_PI};
+        /** The valley probes (probeValley()) go this many times as far as another answer is, and doubt
+          * the answer only when they keep this share of its fine correspondences (doc/design.md#rival-probe). */
+        constexpr double kValleyMargin = 1.5;
+        constexpr double kValleyFit = 0.95;
 
         /** A rival needs less evidence than an answer: one that fails only the free-space check, by at
           * most this many times free_space_fraction, still makes the pair ambiguous. The stricter the
           * check, the fewer rivals pass it; doubting on weaker evidence keeps a strict check from turning
-          * ambiguous pairs into wrong answers (doc/design.md#free-space-check). */
-        constexpr double kRivalFreeSpaceFactor = 5.0;
+          * ambiguous pairs into wrong answers (doc/design.md#free-space-check). verify() measures the
+          * violation exactly up to here. */
+        constexpr double kRivalFreeSpaceFactor = kFreeSpaceMeasuredFactor;
 
         /** A rival is dismissed on empty-space evidence only when the kept pose shows at most this
           * fraction of the rival's (TensorRegistrationParams::rival_empty_space_margin): one-sided
@@ -365,6 +370,41 @@ namespace pcl
               return false;
             }
 
+            /** The step along \a conditioning's least constrained motion (rivalPoses()) that takes \a pose
+              * kValleyMargin times as far as another answer is (kRivalRotation, kRivalTranslation). */
+            double
+            valleyStep (const PoseConditioning& conditioning, const Eigen::Matrix4f& pose) const
+            {
+              const auto unit = rivalPoses (conditioning, pose, 1, {1.0});
+              if (unit.empty ())
+                return 0.0;
+              const double turn = 2.0 * std::acos (std::min (1.0, cosHalfAngleBetween (unit[0], pose))) * 180.0 / M_PI;
+              const double move = static_cast<double> (((unit[0] - pose) * scene_centroid_).norm ()) / report_.resolution;
+              const double step = std::min (turn > 0.0 ? kRivalRotation / turn : 1.0, move > 0.0 ? kRivalTranslation / move : 1.0);
+              return kValleyMargin * std::min (step, 1.0);
+            }
+
+            /** \a best moved both ways along its least constrained motion just past another answer's
+              * distance (valleyStep()) and judged as it is: a pose the views pin down loses its fit there,
+              * one in a valley (a surface of revolution) that D alone cuts short keeps it. A probe that passes
+              * goes to \a passed, one that is evidence enough for a rival (outright) to \a rivals, when it
+              * keeps kValleyFit of \a best's fine correspondences: with fewer, the views tell them apart. */
+            void
+            probeValley (const PoseConditioning& conditioning, const TensorVerificationResult& best,
+                         std::vector<TensorVerificationResult>& passed, std::vector<TensorVerificationResult>& rivals)
+            {
+              const auto valley = rivalPoses (conditioning, best.transform, 1, {valleyStep (conditioning, best.transform)});
+              for (std::size_t k = 0; k < 2 && k < valley.size (); ++k)
+              {
+                ++report_.ambiguity_checks;
+                TensorVerificationResult result;
+                const bool outright = verification_.verify (valley[k], result, false) && (!accept_ || accept_ (result));
+                if ((outright || (!result.passed () && rivalPasses (result, true, true))) &&
+                    result.fine_correspondences >= kValleyFit * best.fine_correspondences)
+                  (outright ? passed : rivals).push_back (result);
+              }
+            }
+
             /** The rival poses near \a best (rivalPoses()) that pass verification and the acceptor: the
               * one with the most fine correspondences replaces \a best. True when another distinct pose
               * that is evidence enough for a rival (rivalPasses()) has nearly as many (rival_margin) and is
@@ -391,6 +431,7 @@ namespace pcl
                 else if (!result.passed () && rivalPasses (result, true, outright))
                   rivals.push_back (result);
               };
+              probeValley (conditioning, best, passed, rivals);
               for (const Eigen::Matrix4f& pose : rivalPoses (conditioning, best.transform, 2, kRivalSteps))
                 probe (pose, false);
               // A far turn of a near-symmetric object (an ellipsoid) meets poses that almost fit: from
@@ -412,6 +453,20 @@ namespace pcl
                   return true;
                 }
               return false;
+            }
+
+            /** \a search run with the rivals' ICP (TensorRegistrationParams::rival_icp_max_normal_angle);
+              * the answer's is restored after. */
+            template <typename Search> bool
+            withRivalIcp (Search search)
+            {
+              const TensorVerificationParams answer = verification_.getParams ();
+              TensorVerificationParams rival = answer;
+              rival.icp_max_normal_angle = params_.rival_icp_max_normal_angle;
+              verification_.setParams (rival);
+              const bool found = search ();
+              verification_.setParams (answer);
+              return found;
             }
 
             /** Verify the first \a count of \a matches in order; all of them may serve as rivals. */
@@ -439,7 +494,7 @@ namespace pcl
                   continue;
                 }
                 // Two poses that both verify: no evidence picks one, so neither is reported.
-                report_.ambiguous = findRival (matches, k + 1, batch, result) || probeRivals (result);
+                report_.ambiguous = withRivalIcp ([&] { return findRival (matches, k + 1, batch, result) || probeRivals (result); });
                 report_.registered = !report_.ambiguous;
                 report_.winning_match = match;
                 report_.winning_match.scene += static_cast<decltype (match.scene)> (first);

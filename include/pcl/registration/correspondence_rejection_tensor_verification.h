@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pcl/common/object_dimensions.h>
+#include <pcl/common/view_extents.h>
 #include <pcl/features/tensor_descriptor.h>
 #include <pcl/registration/correspondence_rejection.h>
 #include <pcl/registration/tensor_match.h>
@@ -17,6 +18,7 @@
 
 #include <memory>
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace pcl
@@ -205,12 +207,14 @@ namespace pcl
         /** The z-buffers of both views, built once per pair, for the first hypothesis that needs them. */
         void projectViews ();
         /** The larger fraction, over both directions, of one view's points that violate the other's
-          * free space in its z-buffer (\a model_view or \a scene_view) under \a t. */
+          * free space in its z-buffer (\a model_view or \a scene_view) under \a t; once it is known to
+          * exceed \a stop_above, that lower bound. */
         double violation (const Eigen::Matrix4f& t, double margin, const RangeViewProjection& model_view,
-                          const RangeViewProjection& scene_view) const;
+                          const RangeViewProjection& scene_view,
+                          double stop_above = std::numeric_limits<double>::infinity ()) const;
         /** max(D_combined - D) of the model points and the transformed scene points, in the best of
           * their combined principal frame and each view's own (registeredDimensionExcess). */
-        double dimensionExcess (const PointCloudN& model, const PointCloudN& scene, const Eigen::Matrix4f& t) const;
+        double dimensionExcess (const ViewExtents& model, const ViewExtents& scene, const Eigen::Matrix4f& t) const;
 
         shared_ptr<const PreparedScan> model_, scene_;
         TensorCloudConstPtr model_tensors_, scene_tensors_;
@@ -220,6 +224,7 @@ namespace pcl
         bool prepared_{false};
 
         pcl::BoundedNearestSearch model_search_, scene_search_;
+        ViewExtents model_fine_extents_, scene_fine_extents_, model_reduced_extents_, scene_reduced_extents_;
         RangeViewProjectionMemo::Ptr model_projections_, scene_projections_;
         RangeViewProjectionMemo::Projection model_view_, scene_view_;
         RangeViewProjectionMemo::Projection model_empty_view_, scene_empty_view_;  ///< emptySpaceViolation()'s

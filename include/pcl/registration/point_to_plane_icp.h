@@ -3,6 +3,7 @@
  */
 #pragma once
 
+#include <pcl/pcl_macros.h>
 #include <pcl/point_cloud.h>
 #include <pcl/search/bounded_nearest_search.h>
 #include <pcl/point_types.h>
@@ -27,6 +28,11 @@ namespace pcl
         * wide first stage reaches poses a single tensor match leaves several degrees off; a tight last one
         * keeps the views' parts that do not overlap from pulling the pose. 0: one stage. */
       double final_distance = 0.0;
+      /** Pairs whose normals (the source's turned by the pose) differ by more than this angle, radians,
+        * are not used: Rusinkiewicz and Levoy's compatible normals. At a sharp edge or on a thin part a
+        * point's nearest neighbour lies on another face, whose plane pulls the pose away from the
+        * truth. Pi (default): every pair is used. A pair whose source has no normal is used. */
+      double max_normal_angle = M_PI;
       double min_rotation = 1e-5;       ///< stop when an update turns less than this (radians) ...
       double min_translation = 0.0;     ///< ... and moves less than this
       /** Stages before the last only have to bring the pose within reach of the next one, so they
@@ -67,8 +73,8 @@ namespace pcl
 
     /** \brief Point-to-plane ICP (Chen and Medioni's error, in the variant of Rusinkiewicz and Levoy,
       * 2001, that Section 4.1 of Mian et al. uses): each iteration pairs every source point with its
-      * nearest target point, drops pairs farther than max_distance or whose target has no normal
-      * (NaN or zero), and solves the linearised
+      * nearest target point, drops pairs farther than max_distance, whose target has no normal
+      * (NaN or zero) or whose normals differ by more than max_normal_angle, and solves the linearised
       * point-to-plane least squares for a small rotation and a translation.
       * \param[in] source points to move (e.g. a sample of the scene)
       * \param[in] target points with normals (the model), searched through \a search

@@ -104,10 +104,12 @@ namespace pcl
       /** Once a pose passes, the poses a rival could take near it are probed too (rivalPoses(): moved
         * along the two motions its common part constrains least, turned along the least constrained
         * one's screw by up to a half turn (screwTurnPoses()), and turned half-way about that part's
-        * principal axes), each refined by ICP and verified. Of the poses that pass, the one with the
-        * most fine correspondences is kept; another distinct one with enough of them (rival_margin)
-        * means the surfaces do not pin the pose down (a surface of revolution, a plane, a cylinder, a
-        * twofold symmetry), and the pair is reported ambiguous. false: no probe.
+        * principal axes), each refined by ICP and verified; and moved along the least constrained motion
+        * just past another answer's distance, judged as it is (a valley of poses that D alone cuts
+        * short). Of the poses that pass, the one with the most fine correspondences is kept; another
+        * distinct one with enough of them (rival_margin) means the surfaces do not pin the pose down (a
+        * surface of revolution, a plane, a cylinder, a twofold symmetry), and the pair is reported
+        * ambiguous. false: no probe.
         * \note Beyond the paper; see doc/design.md#rival-probe. */
       bool probe_rivals = true;
       /** A distinct rival that passes with at least (1 - rival_margin) times the kept pose's fine
@@ -132,6 +134,12 @@ namespace pcl
         * answers are.
         * \note Beyond the paper; see doc/design.md#rival-probe. */
       double rival_dimension_factor = 1.5;
+      /** The rivals' ICP pairs points whose normals differ by up to this many degrees (default 180:
+        * all of them), where the answer's keeps TensorVerificationParams::icp_max_normal_angle. A rival
+        * only has to show that a second pose fits, and the wider ICP reaches turned poses of a
+        * near-symmetric object that the answer's narrower one stops short of.
+        * \note Beyond the paper; see doc/design.md#compatible-normals. */
+      double rival_icp_max_normal_angle = 180.0;
     };
 
     /** \brief Check every parameter of \a params before any work is done: the components' own

@@ -74,6 +74,13 @@ namespace pcl
         * \note Beyond the paper: a coarse stage only has to bring the pose within reach of the next, so
         * it need not pair every point; see doc/design.md#own-point-to-plane-icp. */
       int icp_coarse_stage_step = 2;
+      /** ICP: pairs whose normals differ by more than this many degrees are not used
+        * (PointToPlaneIcpParams::max_normal_angle; default 60, Rusinkiewicz and Levoy's compatible
+        * normals; 180: all are used).
+        * \note Beyond the paper: from the exact pose of views far apart, ICP with every pair moved
+        * 6-8 degrees away, pulled by points paired across a sharp edge or a thin part; see
+        * doc/design.md#compatible-normals. */
+      double icp_max_normal_angle = 60.0;
       /** Scene points sampled (evenly, deterministically) for ICP and the count before ICP.
         * \note Beyond the paper, which uses every point: the sample keeps each refuted hypothesis cheap,
         * and the final count is still over every point; see doc/design.md#own-point-to-plane-icp. */
@@ -129,6 +136,11 @@ namespace pcl
       double model_matched_seen = 0.0, scene_matched_seen = 0.0;
     };
 
+    /** \brief verify() measures the free-space violation exactly up to this many times
+      * free_space_fraction, the most a rival may show (TensorRegistration's ambiguity check), and stops
+      * counting above: most wrong poses put far more of a view in the other's free space. */
+    constexpr double kFreeSpaceMeasuredFactor = 5.0;
+
     /** \brief Number of stages, PASSED included: the size of per-stage counts. */
     constexpr std::size_t kTensorVerificationStages = 6;
 
@@ -154,7 +166,8 @@ namespace pcl
       /** ICP's RMS point-to-plane distance over its pairs, in the units of the points. */
       double icp_fitness = 0.0;
       /** The larger, over both directions, fraction of a view's points that the other view saw
-        * and that lie in front of its surface (FREE_SPACE). */
+        * and that lie in front of its surface (FREE_SPACE): exact up to kFreeSpaceMeasuredFactor times
+        * free_space_fraction, above it only known to exceed that. */
       double free_space_violation = 0.0;
       /** FINE_OVERLAP without the fine count: the ICP stage check (CorrespondenceRejectorTensorVerification::
         * setIcpStageCheck()) found the pose where a hypothesis that failed that count had been. */
