@@ -79,8 +79,8 @@ namespace pcl_tensor_python
       bindStruct<V> (m, "VerificationParams", "Local verification (Section 4.1); C++ pcl::registration::TensorVerificationParams.",
                      {"coarse_dimension_fraction", "correspondence_fraction", "coarse_distance", "count_both_views",
                       "fine_distance", "fine_dimension_tolerance", "fine_dimension_fraction", "checked_dimensions",
-                      "icp_iterations", "icp_max_distance", "icp_final_distance", "icp_coarse_stage_step", "sample_points",
-                      "free_space_distance", "free_space_fraction", "empty_space_margin"})
+                      "icp_iterations", "icp_max_distance", "icp_final_distance", "icp_coarse_stage_step",
+                      "icp_max_normal_angle", "sample_points", "free_space_distance", "free_space_fraction", "empty_space_margin"})
         .def_readwrite ("coarse_dimension_fraction", &V::coarse_dimension_fraction)
         .def_readwrite ("correspondence_fraction", &V::correspondence_fraction)
         .def_readwrite ("coarse_distance", &V::coarse_distance)
@@ -93,6 +93,7 @@ namespace pcl_tensor_python
         .def_readwrite ("icp_max_distance", &V::icp_max_distance)
         .def_readwrite ("icp_final_distance", &V::icp_final_distance)
         .def_readwrite ("icp_coarse_stage_step", &V::icp_coarse_stage_step)
+        .def_readwrite ("icp_max_normal_angle", &V::icp_max_normal_angle)
         .def_readwrite ("sample_points", &V::sample_points)
         .def_readwrite ("free_space_distance", &V::free_space_distance)
         .def_readwrite ("free_space_fraction", &V::free_space_fraction)
@@ -105,7 +106,7 @@ namespace pcl_tensor_python
                       "fallback_correlation_threshold", "theta_bin_width", "order", "scene_tensor_batches",
                       "batch_hypotheses", "verification", "max_hypotheses", "repeat_rotation", "repeat_translation",
                       "ambiguity_checks", "ambiguity_rotation", "probe_rivals", "rival_margin", "rival_empty_space_margin",
-                      "rival_empty_space_fraction", "rival_dimension_factor"})
+                      "rival_empty_space_fraction", "rival_dimension_factor", "rival_icp_max_normal_angle"})
         .def_readwrite ("preparation", &R::preparation)
         .def_readwrite ("grid_size", &R::grid_size)
         .def_readwrite ("partners_per_vertex", &R::partners_per_vertex)
@@ -129,7 +130,8 @@ namespace pcl_tensor_python
         .def_readwrite ("rival_margin", &R::rival_margin)
         .def_readwrite ("rival_empty_space_margin", &R::rival_empty_space_margin)
         .def_readwrite ("rival_empty_space_fraction", &R::rival_empty_space_fraction)
-        .def_readwrite ("rival_dimension_factor", &R::rival_dimension_factor);
+        .def_readwrite ("rival_dimension_factor", &R::rival_dimension_factor)
+        .def_readwrite ("rival_icp_max_normal_angle", &R::rival_icp_max_normal_angle);
     }
 
     void
