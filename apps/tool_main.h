@@ -13,9 +13,13 @@
 
 #ifdef __GLIBC__
 #include <malloc.h>
+#include <sys/mman.h>
+#include <unistd.h>
 #endif
 
 #include <algorithm>
+#include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <string>
@@ -28,17 +32,46 @@ namespace pcl_tensor_tools
   /** Exit code when views could not be registered (verification refused every hypothesis). */
   constexpr int kExitNotRegistered = 3;
 
+#ifdef __GLIBC__
+  /** The heap grown for huge pages: more than a pair of range images takes (about 40 MB at peak). */
+  constexpr std::size_t kHugePageHeap = std::size_t (128) << 20;
+
+  /** Grows the heap by \a bytes (address space only: no page is touched) and asks the kernel to back
+    * it with transparent huge pages, as glibc's own glibc.malloc.hugetlb=1 tunable would, which only
+    * the environment can set. A pair of scans first touches some 10,000 pages of 4 KiB, and in a
+    * virtual machine each fault costs several microseconds: near a third of a pair's time (doc/log.md,
+    * stop 48). Where THP is off the advice changes nothing; growth beyond \a bytes gets ordinary
+    * pages. It holds only while every block comes from the heap and stays there (the thresholds of
+    * keepFreedMemoryForReuse()). */
+  inline void
+  adviseHugePages (std::size_t bytes)
+  {
+    constexpr std::size_t kHugePage = 2 << 20;
+    const auto begin = reinterpret_cast<std::uintptr_t> (sbrk (0));
+    // Freed, the block stays on the heap, as trimming waits for far more free memory. volatile: a
+    // compiler may drop a malloc that is freed unused.
+    void* volatile block = malloc (bytes);
+    free (block);
+    const auto end = reinterpret_cast<std::uintptr_t> (sbrk (0));
+    const std::uintptr_t first = (begin + kHugePage - 1) & ~(kHugePage - 1);
+    if (end > first)
+      madvise (reinterpret_cast<void*> (first), end - first, MADV_HUGEPAGE);
+  }
+#endif
+
   /** For a tool that runs once and must answer fast: each stage frees clouds of megabytes that the
     * next allocates again. glibc returns such blocks to the system (mmap, trim) and each page faults
     * back in; kept in the process, they are reused. pcl_tensor_register saves page faults and time
     * for a little more peak memory; pcl_tensor_model gained too little for its extra memory, so only
-    * pcl_tensor_register calls it (figures: doc/log.md). */
+    * pcl_tensor_register calls it (figures: doc/log.md). The heap it then serves from is grown once
+    * and advised for transparent huge pages (adviseHugePages()). */
   inline void
   keepFreedMemoryForReuse ()
   {
 #ifdef __GLIBC__
     mallopt (M_MMAP_THRESHOLD, 256 << 20);
     mallopt (M_TRIM_THRESHOLD, 1 << 30);
+    adviseHugePages (kHugePageHeap);
 #endif
   }
 

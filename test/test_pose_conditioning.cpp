@@ -123,8 +123,14 @@ TEST (PoseConditioning, RivalPosesFollowTheFreeMotions)
     const Eigen::Vector3f centroid = c.centroid.cast<float> ();
     EXPECT_LT (((rivals[k] * centroid.homogeneous ()).head<3> () - centroid).norm (), 1e-6f);
   }
+  // The steps are motionPoses(), in its order.
+  const auto steps = pcl::registration::motionPoses (c, Eigen::Matrix4f::Identity (), 2, {0.35, 0.8});
+  ASSERT_EQ (steps.size (), 8u);
+  for (std::size_t k = 0; k < steps.size (); ++k)
+    EXPECT_TRUE (steps[k].isApprox (rivals[k])) << "step " << k;
   // No pairs, no rivals.
   EXPECT_TRUE (pcl::registration::rivalPoses (pcl::registration::PoseConditioning (), Eigen::Matrix4f::Identity (), 2, {0.35}).empty ());
+  EXPECT_TRUE (pcl::registration::motionPoses (pcl::registration::PoseConditioning (), Eigen::Matrix4f::Identity (), 2, {0.35}).empty ());
 }
 
 // A cone's patch leaves one motion free, the turn about its axis (y, off the patch's centroid). Turned

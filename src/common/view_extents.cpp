@@ -19,14 +19,7 @@ namespace pcl
     for (const auto& p : cloud)
       if (p.getVector3fMap ().allFinite ())
         points_.push_back (p.getVector3fMap ().template cast<double> ());
-    if (points_.empty ())
-      return;
-    // Two passes, centroid first, so that the scatter does not lose digits to large coordinates.
-    for (const auto& p : points_)
-      centroid_ += p;
-    centroid_ /= static_cast<double> (points_.size ());
-    for (const auto& p : points_)
-      scatter_.noalias () += (p - centroid_) * (p - centroid_).transpose ();
+    moments_ = computePointMoments (points_);
     for (std::size_t first = 0; first < points_.size (); first += kRun)
     {
       const std::size_t last = std::min (first + kRun, points_.size ());
@@ -110,20 +103,16 @@ namespace pcl
   registeredDimensionExcess (const ViewExtents& model, const ViewExtents& scene, const Eigen::Matrix4d& t,
                              const ObjectDimensions& dims, int checked)
   {
-    const double n_m = static_cast<double> (model.size ()), n_s = static_cast<double> (scene.size ()), n = n_m + n_s;
-    if (n < 3.0)
-      PCL_TENSOR_THROW (InvalidScanException, "principal axes need at least 3 finite points, got " << n);
-    // The union's scatter from the views' moments (Chan et al.'s pairwise update).
+    const PointMoments both = unitePointMoments (model.moments (), scene.moments (), Eigen::Affine3d (t));
+    if (both.count < 3.0)
+      PCL_TENSOR_THROW (InvalidScanException, "principal axes need at least 3 finite points, got " << both.count);
     const Eigen::Matrix3d r = t.topLeftCorner<3, 3> ();
-    const Eigen::Vector3d delta = r * scene.centroid () + t.topRightCorner<3, 1> () - model.centroid ();
-    const Eigen::Matrix3d scatter = model.scatter () + r * scene.scatter () * r.transpose () +
-                                    delta * delta.transpose () * (n_m * n_s / n);
-    double excess = dimensionExcess (unionExtents (model, scene, t, axesOf (scatter)), dims, checked);
+    double excess = dimensionExcess (unionExtents (model, scene, t, axesOf (both.scatter)), dims, checked);
     // Each view's own frame, as registeredDimensionExcess() takes it; too small a view has none.
     if (model.size () >= 3)
-      excess = std::min (excess, dimensionExcess (unionExtents (model, scene, t, axesOf (model.scatter ())), dims, checked));
+      excess = std::min (excess, dimensionExcess (unionExtents (model, scene, t, axesOf (model.moments ().scatter)), dims, checked));
     if (scene.size () >= 3)
-      excess = std::min (excess, dimensionExcess (unionExtents (model, scene, t, r * axesOf (scene.scatter ())), dims, checked));
+      excess = std::min (excess, dimensionExcess (unionExtents (model, scene, t, r * axesOf (scene.moments ().scatter)), dims, checked));
     return excess;
   }
 

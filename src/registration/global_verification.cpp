@@ -2,6 +2,7 @@
  * pcl_tensor: automatic pairwise registration of range images with tensors.
  */
 #include <pcl/registration/global_verification.h>
+#include <pcl/common/point_moments.h>
 #include <pcl/common/tensor_exceptions.h>
 
 #include "../common/convex_hull_vertices.h"
@@ -80,19 +81,13 @@ namespace pcl
       for (const auto& p : cloud)
         if (p.getVector3fMap ().allFinite ())
           points.push_back (p.getVector3fMap ().cast<double> ());
-      Moments& m = view.moments_;
-      m.count = static_cast<double> (points.size ());
+      view.moments_ = computePointMoments (points);
+      const PointMoments& m = view.moments_;
       Frame frame;
       if (!points.empty ())
       {
         view.anchor_ = points.front ();
         view.anchored_ = true;
-        // Two passes, centroid first, so that the scatter does not lose digits to large coordinates.
-        for (const auto& p : points)
-          m.mean += p;
-        m.mean /= m.count;
-        for (const auto& p : points)
-          m.scatter.noalias () += (p - m.mean) * (p - m.mean).transpose ();
         std::vector<Eigen::Vector3f> relative;
         relative.reserve (points.size ());
         for (const auto& p : points)
@@ -140,14 +135,11 @@ namespace pcl
     GlobalVerification::excess (const GlobalVerification& other, const Eigen::Affine3d& pose) const
     {
       // The union's moments: the other group's moved, then combined (Chan et al.'s pairwise update).
-      const double n_a = moments_.count, n_b = other.moments_.count, n = n_a + n_b;
-      if (n < 3.0)
-        PCL_TENSOR_THROW (InvalidScanException, "principal axes need at least 3 finite points, got " << n);
+      const PointMoments both = unitePointMoments (moments_, other.moments_, pose);
+      if (both.count < 3.0)
+        PCL_TENSOR_THROW (InvalidScanException, "principal axes need at least 3 finite points, got " << both.count);
       const Eigen::Matrix3d& r = pose.linear ();
-      const Eigen::Vector3d delta = pose * other.moments_.mean - moments_.mean;
-      const Eigen::Matrix3d scatter = moments_.scatter + r * other.moments_.scatter * r.transpose () +
-                                      delta * delta.transpose () * (n_a * n_b / n);
-      const Eigen::Matrix3d axes = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> (scatter).eigenvectors ();
+      const Eigen::Matrix3d axes = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> (both.scatter).eigenvectors ();
       const int checked = params_.checked_dimensions;
       double excess = dimensionExcess (unionExtents (other, pose, axes), dims_, checked);
 
@@ -206,14 +198,8 @@ namespace pcl
         }
         frames_.push_back (moved);
       }
-      const double n_a = moments_.count, n_b = other.moments_.count, n = n_a + n_b;
-      if (n_b > 0.0)
-      {
-        const Eigen::Vector3d delta = pose * other.moments_.mean - moments_.mean;
-        moments_.scatter += r * other.moments_.scatter * r.transpose () + delta * delta.transpose () * (n_a * n_b / n);
-        moments_.mean += delta * (n_b / n);
-        moments_.count = n;
-      }
+      if (other.moments_.count > 0.0)
+        moments_ = unitePointMoments (moments_, other.moments_, pose);
       points_.reserve (points_.size () + other.points_.size ());
       const Eigen::Vector3d offset = pose * other.anchor_ - anchor_;
       for (const auto& p : other.points_)

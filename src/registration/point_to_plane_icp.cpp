@@ -34,6 +34,8 @@ namespace pcl
         Eigen::Matrix<double, 6, 6> a = Eigen::Matrix<double, 6, 6>::Zero ();
         Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero ();
         const float radius = static_cast<float> (max_distance);
+        // At pi every pair is used, exactly opposite normals too (a rounded cosine could drop them).
+        const bool check_normals = min_normal_cosine > -1.0;
         Step step;
         double sum2 = 0.0;
         for (std::size_t i = 0; i < source.size (); i += stride)
@@ -48,9 +50,12 @@ namespace pcl
           const Eigen::Vector3d n = m.getNormalVector3fMap ().cast<double> ();
           if (!n.allFinite () || n.squaredNorm () == 0.0)
             continue;  // no tangent plane: a vertex on no face, or a cloud without normals
-          const Eigen::Vector3f ns = t.topLeftCorner<3, 3> () * p.getNormalVector3fMap ();
-          if (ns.allFinite () && ns.squaredNorm () > 0.0f && ns.cast<double> ().dot (n) < min_normal_cosine * ns.norm () * n.norm ())
-            continue;  // another face of the target: its plane would pull the pose off
+          if (check_normals)
+          {
+            const Eigen::Vector3f ns = t.topLeftCorner<3, 3> () * p.getNormalVector3fMap ();
+            if (ns.allFinite () && ns.squaredNorm () > 0.0f && ns.cast<double> ().dot (n) < min_normal_cosine * ns.norm () * n.norm ())
+              continue;  // another face of the target: its plane would pull the pose off
+          }
           const Eigen::Vector3d s = q.cast<double> ();
           const double r = (s - m.getVector3fMap ().cast<double> ()).dot (n);
           Eigen::Matrix<double, 6, 1> j;

@@ -105,25 +105,41 @@ namespace pcl
         m.topRightCorner<3, 1> () = centre - r * centre + left * v;
         return m.cast<float> ();
       }
+
+      /** Enough pairs to have motions at all: six unknowns, and a common part with some extent. */
+      bool
+      determinable (const PoseConditioning& conditioning)
+      {
+        return conditioning.pairs >= 6 && conditioning.radius > 0.0;
+      }
     }
 
     std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>>
-    rivalPoses (const PoseConditioning& conditioning, const Eigen::Matrix4f& pose, int directions, const std::vector<double>& steps)
+    motionPoses (const PoseConditioning& conditioning, const Eigen::Matrix4f& pose, int directions, const std::vector<double>& steps)
     {
       std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> poses;
-      if (conditioning.pairs < 6 || !(conditioning.radius > 0.0))
+      if (!determinable (conditioning))
         return poses;
-      const Eigen::Vector3d& c = conditioning.centroid;
       for (int k = 0; k < std::min (directions, 6); ++k)
       {
         // A unit motion in the scaled coordinates moves the common part's rim by about its radius.
         const Eigen::Matrix<double, 6, 1> v = conditioning.eigenvectors.col (k);
         for (const double s : steps)
           for (const double sign : {1.0, -1.0})
-            poses.push_back (motionAbout (c, sign * s * v.head<3> (), sign * s * conditioning.radius * v.tail<3> ()) * pose);
+            poses.push_back (motionAbout (conditioning.centroid, sign * s * v.head<3> (),
+                                          sign * s * conditioning.radius * v.tail<3> ()) * pose);
       }
+      return poses;
+    }
+
+    std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>>
+    rivalPoses (const PoseConditioning& conditioning, const Eigen::Matrix4f& pose, int directions, const std::vector<double>& steps)
+    {
+      auto poses = motionPoses (conditioning, pose, directions, steps);
+      if (!determinable (conditioning))
+        return poses;
       for (int a = 0; a < 3; ++a)
-        poses.push_back (motionAbout (c, M_PI * conditioning.axes.col (a), Eigen::Vector3d::Zero ()) * pose);
+        poses.push_back (motionAbout (conditioning.centroid, M_PI * conditioning.axes.col (a), Eigen::Vector3d::Zero ()) * pose);
       return poses;
     }
 
@@ -133,7 +149,7 @@ namespace pcl
       std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>> poses;
       const Eigen::Matrix<double, 6, 1> screw = conditioning.eigenvectors.col (0);
       const double turn_rate = screw.head<3> ().norm ();
-      if (conditioning.pairs < 6 || !(conditioning.radius > 0.0) || turn_rate < 0.25)
+      if (!determinable (conditioning) || turn_rate < 0.25)
         return poses;
       for (const double angle : turns)
         for (const double sign : {1.0, -1.0})

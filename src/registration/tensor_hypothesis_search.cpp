@@ -370,12 +370,12 @@ namespace pcl
               return false;
             }
 
-            /** The step along \a conditioning's least constrained motion (rivalPoses()) that takes \a pose
+            /** The step along \a conditioning's least constrained motion (motionPoses()) that takes \a pose
               * kValleyMargin times as far as another answer is (kRivalRotation, kRivalTranslation). */
             double
             valleyStep (const PoseConditioning& conditioning, const Eigen::Matrix4f& pose) const
             {
-              const auto unit = rivalPoses (conditioning, pose, 1, {1.0});
+              const auto unit = motionPoses (conditioning, pose, 1, {1.0});
               if (unit.empty ())
                 return 0.0;
               const double turn = 2.0 * std::acos (std::min (1.0, cosHalfAngleBetween (unit[0], pose))) * 180.0 / M_PI;
@@ -393,12 +393,11 @@ namespace pcl
             probeValley (const PoseConditioning& conditioning, const TensorVerificationResult& best,
                          std::vector<TensorVerificationResult>& passed, std::vector<TensorVerificationResult>& rivals)
             {
-              const auto valley = rivalPoses (conditioning, best.transform, 1, {valleyStep (conditioning, best.transform)});
-              for (std::size_t k = 0; k < 2 && k < valley.size (); ++k)
+              for (const Eigen::Matrix4f& pose : motionPoses (conditioning, best.transform, 1, {valleyStep (conditioning, best.transform)}))
               {
                 ++report_.ambiguity_checks;
                 TensorVerificationResult result;
-                const bool outright = verification_.verify (valley[k], result, false) && (!accept_ || accept_ (result));
+                const bool outright = verification_.verify (pose, result, false) && (!accept_ || accept_ (result));
                 if ((outright || (!result.passed () && rivalPasses (result, true, true))) &&
                     result.fine_correspondences >= kValleyFit * best.fine_correspondences)
                   (outright ? passed : rivals).push_back (result);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pcl/common/object_dimensions.h>
+#include <pcl/common/point_moments.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
@@ -30,10 +31,8 @@ namespace pcl
 
       /** \brief Number of finite points. */
       std::size_t size () const { return points_.size (); }
-      /** \brief Their centroid. */
-      const Eigen::Vector3d& centroid () const { return centroid_; }
-      /** \brief Their scatter: the sum of (p - centroid)(p - centroid)^T. */
-      const Eigen::Matrix3d& scatter () const { return scatter_; }
+      /** \brief Their count, centroid and scatter. */
+      const PointMoments& moments () const { return moments_; }
 
       /** \brief max over the points of \a direction . p, exactly (-infinity without points). */
       double support (const Eigen::Vector3d& direction) const;
@@ -49,8 +48,7 @@ namespace pcl
 
       std::vector<Eigen::Vector3d> points_;
       std::vector<Eigen::Vector3d> box_centres_, box_halves_;
-      Eigen::Vector3d centroid_ = Eigen::Vector3d::Zero ();
-      Eigen::Matrix3d scatter_ = Eigen::Matrix3d::Zero ();
+      PointMoments moments_;
   };
 
   /** \brief registeredDimensionExcess() of two views, \a scene moved by \a t into \a model's frame,

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pcl/common/object_dimensions.h>
+#include <pcl/common/point_moments.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
@@ -71,15 +72,6 @@ namespace pcl
         std::size_t views () const { return frames_.size (); }
 
       private:
-        /** Count, mean and scatter of points: the principal axes of a union of views follow from
-          * theirs without another pass over the points. */
-        struct Moments
-        {
-          double count = 0.0;
-          Eigen::Vector3d mean = Eigen::Vector3d::Zero ();
-          Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero ();
-        };
-
         /** One view's own principal axes and the extents of every registered point along them
           * (relative to anchor_), kept up to date as views are added, so that a check costs one pass
           * over the new points instead of one per view over all points. */
@@ -109,7 +101,7 @@ namespace pcl
           * common frame relative to anchor_. */
         std::vector<Eigen::Vector3f> points_;
         std::vector<Frame> frames_;
-        Moments moments_;
+        PointMoments moments_;  ///< of every registered finite point, in the common frame
         /** The first finite point: points and extents are measured from it, which keeps the digits that
           * large coordinates would take. */
         Eigen::Vector3d anchor_ = Eigen::Vector3d::Zero ();

@@ -40,13 +40,20 @@ namespace pcl
       Eigen::Matrix3d axes = Eigen::Matrix3d::Identity ();
     };
 
-    /** \brief Poses a rival registration could take near \a pose, for checking that \a pose is the
-      * only one the views verify: \a pose moved along each of the \a directions least constrained
-      * motions of \a conditioning by each of \a steps (and their negatives; a step of s turns the
-      * common part by s |omega| radians and moves it by s |v| times its radius, for the motion's unit
-      * (omega, v)), and turned half-way about each of its principal axes (a twofold symmetry). Each is
+    /** \brief \a pose moved along each of the \a directions least constrained motions of \a
+      * conditioning by each of \a steps and their negatives: a step of s turns the common part by s
+      * |omega| radians and moves it by s |v| times its radius, for the motion's unit (omega, v). Each is
       * applied about the common part's centroid, in the target's frame. None when \a conditioning has
       * too few pairs.
+      * \ingroup registration
+      */
+    std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>>
+    motionPoses (const PoseConditioning& conditioning, const Eigen::Matrix4f& pose, int directions,
+                 const std::vector<double>& steps);
+
+    /** \brief Poses a rival registration could take near \a pose, for checking that \a pose is the
+      * only one the views verify: motionPoses(), and \a pose turned half-way about each principal
+      * axis of the common part (a twofold symmetry). None when \a conditioning has too few pairs.
       * \ingroup registration
       */
     std::vector<Eigen::Matrix4f, Eigen::aligned_allocator<Eigen::Matrix4f>>
