@@ -2,7 +2,6 @@
  * pcl_tensor: automatic pairwise registration of range images with tensors.
  */
 #include <pcl/registration/global_verification.h>
-#include <pcl/common/point_moments.h>
 #include <pcl/common/tensor_exceptions.h>
 
 #include "../common/convex_hull_vertices.h"
