@@ -39,8 +39,8 @@ namespace pcl_tensor_tools
   /** Grows the heap by \a bytes (address space only: no page is touched) and asks the kernel to back
     * it with transparent huge pages, as glibc's own glibc.malloc.hugetlb=1 tunable would, which only
     * the environment can set. A pair of scans first touches some 10,000 pages of 4 KiB, and in a
-    * virtual machine each fault costs several microseconds: near a third of a pair's time (doc/log.md,
-    * stop 48). Where THP is off the advice changes nothing; growth beyond \a bytes gets ordinary
+    * virtual machine each fault costs several microseconds: the advice took about a quarter off a
+    * pair's time (doc/log.md, stop 48). Where THP is off the advice changes nothing; growth beyond \a bytes gets ordinary
     * pages. It holds only while every block comes from the heap and stays there (the thresholds of
     * keepFreedMemoryForReuse()). */
   inline void
